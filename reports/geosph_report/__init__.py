@@ -1,0 +1,1 @@
+"""GeoSPH verification report: load result records, fit convergence orders, draw figures, write HTML."""

@@ -1,0 +1,62 @@
+#include "boundary/dummy_wall.hpp"
+
+#include <cmath>
+
+namespace geosph {
+
+DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
+    : scene_(scene), fluid_(fluid), no_slip_(scene.walls.slip == "no_slip") {}
+
+void DummyWalls::allocate(Particles& P) const {
+  if (!no_slip_) return;
+  P.field("wall_vx"); P.field("wall_vy"); P.field("wall_vz");
+}
+
+void DummyWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  std::visit(
+      [&](const auto& kernel) {
+        const std::size_t n = P.size();
+        double* wvx = no_slip_ ? P.field("wall_vx").data() : nullptr;
+        double* wvy = no_slip_ ? P.field("wall_vy").data() : nullptr;
+        double* wvz = no_slip_ ? P.field("wall_vz").data() : nullptr;
+        const auto& eos = fluid_.eos();
+        const double volume = std::pow(scene_.dx, scene_.dim);
+#pragma omp parallel for schedule(dynamic, 256)
+        for (std::size_t w = 0; w < n; ++w) {
+          if (P.kind[w] != Kind::DummyWall) continue;
+          double sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
+          double wmax = -1;
+          std::uint16_t mat = 0;
+          cells.for_each_neighbor(P, w, [&](std::uint32_t f, double dx, double dy, double dz, double r2) {
+            if (P.kind[f] != Kind::Fluid) return;
+            const double W = kernel.W(std::sqrt(r2));
+            sw += W;
+            sp += P.p[f] * W;
+            const double rw = P.rho[f] * W;
+            srx += rw * dx; sry += rw * dy; srz += rw * dz;
+            svx += P.vx[f] * W; svy += P.vy[f] * W; svz += P.vz[f] * W;
+            if (W > wmax) { wmax = W; mat = P.material[f]; }
+          });
+          const TaitEos& e = eos[mat];
+          if (sw > 0) {
+            // fixed walls: a_w = 0
+            P.p[w] = (sp + g[0] * srx + g[1] * sry + g[2] * srz) / sw;
+            P.rho[w] = e.density(P.p[w]);
+            P.m[w] = P.rho[w] * volume;
+            if (no_slip_) {
+              wvx[w] = 2.0 * P.vx[w] - svx / sw;
+              wvy[w] = 2.0 * P.vy[w] - svy / sw;
+              wvz[w] = 2.0 * P.vz[w] - svz / sw;
+            }
+          } else {
+            P.p[w] = e.p_bg;
+            P.rho[w] = e.rho0;
+            P.m[w] = e.rho0 * volume;
+            if (no_slip_) { wvx[w] = P.vx[w]; wvy[w] = P.vy[w]; wvz[w] = P.vz[w]; }
+          }
+        }
+      },
+      make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+}  // namespace geosph

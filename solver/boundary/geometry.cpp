@@ -1,0 +1,99 @@
+#include "boundary/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fluid/equation_of_state.hpp"
+
+namespace geosph {
+
+int wall_layers(const Scene& s) {
+  return s.walls.layers > 0 ? s.walls.layers : static_cast<int>(std::ceil(s.support() / s.dx - 1e-9));
+}
+
+namespace {
+
+// Lattice points lo + (i + 1/2) dx covering [lo, hi) on every axis.
+template <class F>
+void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double dx, F&& f) {
+  std::array<long, 3> n{1, 1, 1};
+  for (int a = 0; a < dim; ++a) n[a] = std::max(0L, std::lround((hi[a] - lo[a]) / dx));
+  for (long k = 0; k < n[2]; ++k)
+    for (long j = 0; j < n[1]; ++j)
+      for (long i = 0; i < n[0]; ++i)
+        f(lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dx, dim == 3 ? lo[2] + (k + 0.5) * dx : 0.0);
+}
+
+}  // namespace
+
+Particles build_particles(const Scene& s) {
+  Particles P;
+  P.dim = s.dim;
+  const double vol = std::pow(s.dx, s.dim);
+  const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
+
+  for (const auto& b : s.bodies) {
+    std::uint16_t mat = 0;
+    while (s.materials[mat].name != b.material) ++mat;
+    const TaitEos eos(s.materials[mat]);
+    // depth below the body's highest point, measured along gravity
+    double top = 1e300;
+    for (int c = 0; c < (1 << s.dim); ++c) {
+      double proj = 0;
+      for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
+      top = std::min(top, proj);
+    }
+    lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
+      double rho = eos.rho0;
+      if (b.initial == "hydrostatic" && gmag > 0) {
+        const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
+        rho = eos.density(eos.hydrostatic_pressure(gmag, depth));
+      }
+      P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
+      P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
+      P.p.back() = eos.pressure(rho);
+    });
+  }
+
+  const int L = wall_layers(s);
+  const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
+  const double rho0 = s.materials.front().density;
+  static const char* lo_side[3] = {"left", "bottom", "back"};
+  static const char* hi_side[3] = {"right", "top", "front"};
+  for (const auto& c : s.walls.containers) {
+    auto is_open = [&](const char* side) { return std::find(c.open.begin(), c.open.end(), side) != c.open.end(); };
+    std::array<double, 3> lo = c.lo, hi = c.hi;
+    for (int a = 0; a < s.dim; ++a) {
+      if (s.domain.periodic[a]) continue;
+      if (!is_open(lo_side[a])) lo[a] -= L * s.dx;
+      if (!is_open(hi_side[a])) hi[a] += L * s.dx;
+    }
+    // Repulsive walls (Monaghan 1994) are a single line of particles on the wall surface.
+    const int layers = wall == Kind::RepulsiveWall ? 1 : L;
+    lattice(s.dim, lo, hi, s.dx, [&](double x, double y, double z) {
+      const double q[3] = {x, y, z};
+      int outside_axes = 0;
+      bool in_layers = true;
+      for (int a = 0; a < s.dim; ++a) {
+        if (q[a] < c.lo[a] || q[a] > c.hi[a]) {
+          ++outside_axes;
+          const double dist = q[a] < c.lo[a] ? c.lo[a] - q[a] : q[a] - c.hi[a];
+          in_layers = in_layers && dist < layers * s.dx;
+        }
+      }
+      if (outside_axes == 0 || !in_layers) return;
+      double px = x, py = y, pz = z;
+      if (wall == Kind::RepulsiveWall) {  // put the single line on the wall surface itself
+        double* pq[3] = {&px, &py, &pz};
+        for (int a = 0; a < s.dim; ++a) {
+          if (q[a] < c.lo[a]) *pq[a] = c.lo[a];
+          if (q[a] > c.hi[a]) *pq[a] = c.hi[a];
+        }
+      }
+      P.add(px, py, pz, rho0 * vol, rho0, wall, 0);
+    });
+  }
+  return P;
+}
+
+}  // namespace geosph

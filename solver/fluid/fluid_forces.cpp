@@ -1,0 +1,130 @@
+#include "fluid/fluid_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geosph {
+
+FluidForces::FluidForces(const Scene& scene) : scene_(scene), mats_(scene.materials) {
+  for (const auto& m : mats_) eos_.emplace_back(m);
+  free_slip_walls_ = scene.walls.slip == "free_slip";
+  const double c0 = max_sound_speed();
+  repulsive_D_ = scene.walls.repulsive_strength > 0 ? scene.walls.repulsive_strength : 0.05 * c0 * c0;
+  repulsive_r0_ = scene.dx;
+}
+
+double FluidForces::max_sound_speed() const {
+  double c = 0;
+  for (const auto& m : mats_) c = std::max(c, m.sound_speed);
+  return c;
+}
+
+double FluidForces::max_kinematic_viscosity() const {
+  double nu = 0;
+  for (const auto& m : mats_) nu = std::max(nu, m.kinematic_viscosity);
+  return nu;
+}
+
+void FluidForces::update_pressure(Particles& P) const {
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (P.kind[i] == Kind::Fluid) P.p[i] = eos_[P.material[i]].pressure(P.rho[i]);
+}
+
+void FluidForces::continuity(Particles& P, const CellList& cells) const {
+  std::visit([&](const auto& k) { continuity_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+void FluidForces::momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  std::visit([&](const auto& k) { momentum_with(k, P, cells, g); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+template <class K>
+void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList& cells) const {
+  const std::size_t n = P.size();
+  const double h = scene_.h(), eta2 = 0.01 * h * h;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    const FluidMaterial& mi = mats_[P.material[i]];
+    const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    const double delta_hc = mi.density_diffusion * h * mi.sound_speed;
+    double drho = 0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj == Kind::RepulsiveWall) return;
+      const double r = std::sqrt(r2);
+      const double fw = kernel.dWdr(r) / r;  // grad_i W_ij = fw * r_ij
+      const double mj = P.m[j];
+      // walls enter with their own (prescribed) velocity, zero for fixed walls
+      drho += mj * fw * ((vxi - P.vx[j]) * dx + (vyi - P.vy[j]) * dy + (vzi - P.vz[j]) * dz);
+      if (kj == Kind::Fluid && delta_hc > 0) drho += delta_hc * 2.0 * (rhoi - P.rho[j]) * fw * r2 / (r2 + eta2) * mj / P.rho[j];
+    });
+    P.drho[i] = drho;
+  }
+}
+
+template <class K>
+void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& cells,
+                                const std::array<double, 3>& g) const {
+  const std::size_t n = P.size();
+  const double h = scene_.h(), eta2 = 0.01 * h * h;
+  // Laminar term regularisation: Morris et al. (1997) use eta^2 = 0.01 h^2, but with eta/h fixed
+  // the factor r^2/(r^2 + eta^2) under-estimates the viscosity by ~1% at every resolution (measured
+  // on the Poiseuille case: the error stalls at 1.0-1.4% of v_max). Pairs never come within 0.01 h
+  // in WCSPH, so the smaller eta^2 = 1e-4 h^2 only guards against r = 0.
+  const double eta2_lam = 1e-4 * h * h;
+  const bool has_wall_velocity = P.has_field("wall_vx");
+  const double* wvx = has_wall_velocity ? P.field("wall_vx").data() : nullptr;
+  const double* wvy = has_wall_velocity ? P.field("wall_vy").data() : nullptr;
+  const double* wvz = has_wall_velocity ? P.field("wall_vz").data() : nullptr;
+  const double D = repulsive_D_, r0 = repulsive_r0_;
+  const auto bf = scene_.body_force;
+
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    const FluidMaterial& mi = mats_[P.material[i]];
+    const double rhoi = P.rho[i], pi_r2 = P.p[i] / (rhoi * rhoi);
+    const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    const double alpha_c = mi.artificial_viscosity * mi.sound_speed;
+    const double mu_i = rhoi * mi.kinematic_viscosity;
+    double ax = 0, ay = 0, az = 0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj == Kind::RepulsiveWall) {
+        if (r2 < r0 * r0 && r2 > 0) {
+          const double s2 = r0 * r0 / r2, s4 = s2 * s2, s12 = s4 * s4 * s4;
+          const double f = D * (s12 - s4) / r2;
+          ax += f * dx; ay += f * dy; az += f * dz;
+        }
+        return;
+      }
+      const double r = std::sqrt(r2);
+      const double fw = kernel.dWdr(r) / r;  // grad_i W_ij = fw * r_ij
+      const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
+      const double mj = P.m[j], rhoj = P.rho[j];
+      const double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
+      double coef = mj * (pi_r2 + P.p[j] / (rhoj * rhoj));
+      const bool wall = kj == Kind::DummyWall;
+      if (!(wall && free_slip_walls_)) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
+        double vx = ux, vy = uy, vz = uz;
+        if (wall && wvx) { vx = vxi - wvx[j]; vy = vyi - wvy[j]; vz = vzi - wvz[j]; }
+        const double vr = vx * dx + vy * dy + vz * dz;
+        if (alpha_c > 0 && vr < 0) coef += mj * (-alpha_c * h * vr / (r2 + eta2)) / (0.5 * (rhoi + rhoj));  // m_j Pi_ij
+        if (mu_i > 0) {
+          const double mu_j = wall ? mu_i : rhoj * mats_[P.material[j]].kinematic_viscosity;
+          const double lam = mj * (mu_i + mu_j) * (fw * r2) / (rhoi * rhoj * (r2 + eta2_lam));
+          ax += lam * vx; ay += lam * vy; az += lam * vz;
+        }
+      }
+      ax -= coef * gx; ay -= coef * gy; az -= coef * gz;
+    });
+    P.ax[i] = ax + g[0] + bf[0];
+    P.ay[i] = ay + g[1] + bf[1];
+    P.az[i] = az + g[2] + bf[2];
+  }
+}
+
+}  // namespace geosph

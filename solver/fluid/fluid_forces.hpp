@@ -1,0 +1,51 @@
+// Weakly compressible SPH fluid: continuity and momentum equations for the fluid particles.
+//   continuity   d rho_i/dt = sum_j m_j v_ij . grad_i W_ij                     (Monaghan 1992, eq. 4.7)
+//                + delta-SPH diffusion  delta h c0 sum_j 2 (rho_i - rho_j) r_ij.grad_i W_ij / (r^2 + eta^2) V_j
+//                                                              (Molteni & Colagrossi 2009, eq. 14)
+//   momentum     dv_i/dt = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2 + Pi_ij) grad_i W_ij + g
+//                artificial viscosity Pi_ij = -alpha c0 mu_ij / rho_ij, mu_ij = h v_ij.r_ij/(r^2 + eta^2)
+//                                                              (Monaghan 1992, eq. 4.2)
+//                laminar viscosity  sum_j m_j (mu_i + mu_j) r_ij.grad_i W_ij / (rho_i rho_j (r^2 + eta^2)) v_ij
+//                                                              (Morris, Fox & Zhu 1997, eq. 10)
+//   repulsive walls  f = D [(r0/r)^12 - (r0/r)^4] r_ij / r^2 for r < r0      (Monaghan 1994, eq. 6.1)
+// with eta^2 = 0.01 h^2 (1e-4 h^2 in the laminar term, see fluid_forces.cpp). Dummy wall particles enter with the pressure, density and (no-slip)
+// velocity extrapolated by DummyWalls (Adami, Hu & Adams 2012).
+#pragma once
+#include <vector>
+
+#include "core/cell_list.hpp"
+#include "core/kernels.hpp"
+#include "core/particles.hpp"
+#include "fluid/equation_of_state.hpp"
+#include "io/scene.hpp"
+
+namespace geosph {
+
+class FluidForces {
+ public:
+  explicit FluidForces(const Scene& scene);
+  // Pressure of fluid particles from their density.
+  void update_pressure(Particles& P) const;
+  // Density rates of fluid particles (continuity + delta-SPH).
+  void continuity(Particles& P, const CellList& cells) const;
+  // Accelerations of fluid particles; `g` is the current gravity.
+  void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+
+  const std::vector<TaitEos>& eos() const { return eos_; }
+  double max_sound_speed() const;
+  double max_kinematic_viscosity() const;
+
+ private:
+  template <class K>
+  void continuity_with(const K& kernel, Particles& P, const CellList& cells) const;
+  template <class K>
+  void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+
+  const Scene& scene_;
+  std::vector<TaitEos> eos_;
+  std::vector<FluidMaterial> mats_;
+  bool free_slip_walls_;
+  double repulsive_D_, repulsive_r0_;
+};
+
+}  // namespace geosph

@@ -1,0 +1,176 @@
+#include "io/scene.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include "io/json_fields.hpp"
+
+namespace geosph {
+
+namespace {
+
+const std::vector<std::string> kSides = {"left", "right", "bottom", "top", "front", "back"};
+
+FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
+  FluidMaterial m;
+  m.name = name;
+  f.choice("model", {"tait_fluid"});
+  m.density = f.number("density", Range::positive());
+  m.sound_speed = f.number("sound_speed", Range::positive());
+  m.gamma = f.number("gamma", Range::between(1, 15), 7.0);
+  m.background_pressure = f.number("background_pressure", Range::non_negative(), 0.0);
+  m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.0);
+  m.kinematic_viscosity = f.number("kinematic_viscosity", Range::non_negative(), 0.0);
+  m.density_diffusion = f.number("density_diffusion", Range::between(0, 1), 0.0);
+  f.reject_unknown();
+  return m;
+}
+
+}  // namespace
+
+Scene parse_scene(const nlohmann::json& j, const std::string& file) {
+  Scene s;
+  s.file = file;
+  JsonFields top(j, file, "");
+  s.name = top.text("name");
+  s.dim = static_cast<int>(top.integer("dimension", 2, 3));
+  s.dx = top.number("dx", Range::positive());
+  const int d = s.dim;
+
+  if (auto k = top.optional_object("kernel")) {
+    const std::string kname = k->choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"});
+    s.kernel = kernel_from_name(kname);
+    s.h_over_dx = k->number("h_over_dx", Range::between(0.8, 3.0), default_h_over_dx(s.kernel));
+    k->reject_unknown();
+  } else {
+    s.h_over_dx = default_h_over_dx(s.kernel);
+  }
+
+  auto dom = top.object("domain");
+  s.domain.dim = d;
+  s.domain.lo = dom.vector("min", d);
+  s.domain.hi = dom.vector("max", d);
+  for (const auto& a : dom.texts("periodic", {"x", "y", "z"})) {
+    if (a[0] - 'x' >= d) dom.fail("periodic", "axis '" + a + "' does not exist in " + std::to_string(d) + "D");
+    s.domain.periodic[a[0] - 'x'] = true;
+  }
+  for (int a = 0; a < d; ++a)
+    if (!(s.domain.hi[a] > s.domain.lo[a])) dom.fail("max", "must be greater than domain.min on every axis");
+  dom.reject_unknown();
+
+  s.gravity = top.vector("gravity", d, {0, 0, 0});
+  s.body_force = top.vector("body_force", d, {0, 0, 0});
+
+  auto t = top.object("time");
+  s.t_end = t.number("end", Range::positive());
+  s.cfl = t.number("cfl", Range{0, 1, true, false}, 0.2);
+  s.force_factor = t.number("force_factor", Range{0, 1, true, false}, 0.25);
+  s.viscous_factor = t.number("viscous_factor", Range{0, 0.5, true, false}, 0.125);
+  s.max_steps = t.integer("max_steps", 1, 2000000000L, 100000000L);
+  s.gravity_ramp = t.number("gravity_ramp", Range::non_negative(), 0.0);
+  t.reject_unknown();
+
+  if (auto o = top.optional_object("output")) {
+    s.output_interval = o->number("interval", Range::non_negative(), 0.0);
+    o->reject_unknown();
+  }
+  if (auto n = top.optional_object("numerics")) {
+    s.reorder_every = static_cast<int>(n->integer("reorder_every", 0, 100000, 20));
+    s.max_density_variation = n->number("max_density_variation", Range{0, 10, true, false}, 0.5);
+    n->reject_unknown();
+  }
+
+  auto mats = top.object("materials");
+  for (const auto& name : mats.keys()) {
+    auto m = mats.object(name);
+    s.materials.push_back(parse_fluid(m, name));
+  }
+  if (s.materials.empty()) mats.fail("", "must define at least one material");
+  mats.reject_unknown();
+
+  for (auto& b : top.array_of_objects("bodies")) {
+    BodySpec body;
+    body.material = b.text("material");
+    bool known = false;
+    for (const auto& m : s.materials) known = known || m.name == body.material;
+    if (!known) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
+    b.choice("shape", {"box"});
+    body.lo = b.vector("min", d);
+    body.hi = b.vector("max", d);
+    for (int a = 0; a < d; ++a)
+      if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
+    body.initial = b.choice("initial", {"rest", "hydrostatic"}, "rest");
+    body.velocity = b.vector("velocity", d, {0, 0, 0});
+    b.reject_unknown();
+    s.bodies.push_back(body);
+  }
+
+  if (auto w = top.optional_object("walls")) {
+    s.walls.type = w->choice("type", {"dummy", "repulsive"});
+    s.walls.slip = w->choice("slip", {"no_slip", "free_slip"}, "no_slip");
+    s.walls.layers = static_cast<int>(w->integer("layers", 1, 10, 0));
+    s.walls.repulsive_strength = w->number("repulsive_strength", Range::non_negative(), 0.0);
+    for (auto& c : w->array_of_objects("containers")) {
+      ContainerSpec cs;
+      cs.lo = c.vector("min", d);
+      cs.hi = c.vector("max", d);
+      for (int a = 0; a < d; ++a)
+        if (!(cs.hi[a] > cs.lo[a])) c.fail("max", "must be greater than min on every axis");
+      cs.open = c.texts("open", kSides);
+      c.reject_unknown();
+      s.walls.containers.push_back(cs);
+    }
+    w->reject_unknown();
+  }
+  top.reject_unknown();
+  validate_scene(s);
+  return s;
+}
+
+void validate_scene(const Scene& s) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw InputError(s.file + ": field '" + field + "': " + what);
+  };
+  const char* axes = "xyz";
+  for (int a = 0; a < s.dim; ++a) {
+    if (s.domain.periodic[a]) {
+      if (s.domain.length(a) < 3 * s.support())
+        fail("domain", std::string("periodic along ") + axes[a] + " needs a length of at least 3 kernel supports (" +
+                           std::to_string(3 * s.support()) + " m)");
+      const double cells = s.domain.length(a) / s.dx;
+      if (std::abs(cells - std::round(cells)) > 1e-6)
+        fail("domain", std::string("periodic length along ") + axes[a] + " must be a whole number of dx");
+    }
+  }
+  // every body and every wall layer must lie inside the domain
+  const double wall_thick = (s.walls.layers > 0 ? s.walls.layers : std::ceil(s.support() / s.dx)) * s.dx;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (int a = 0; a < s.dim; ++a)
+      if (s.bodies[b].lo[a] < s.domain.lo[a] || s.bodies[b].hi[a] > s.domain.hi[a])
+        fail("bodies[" + std::to_string(b) + "]", std::string("extends outside the domain along ") + axes[a] +
+                                                   " (particles must start inside domain.min..domain.max)");
+  for (std::size_t c = 0; c < s.walls.containers.size(); ++c)
+    for (int a = 0; a < s.dim; ++a) {
+      if (s.domain.periodic[a]) continue;
+      if (s.walls.containers[c].lo[a] - wall_thick < s.domain.lo[a] - 1e-12 ||
+          s.walls.containers[c].hi[a] + wall_thick > s.domain.hi[a] + 1e-12)
+        fail("walls.containers[" + std::to_string(c) + "]",
+             std::string("its wall layers (") + std::to_string(wall_thick) + " m thick) extend outside the domain along " +
+                 axes[a]);
+    }
+  if (s.gravity_ramp > s.t_end) fail("time.gravity_ramp", "must not exceed time.end");
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open scene file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path.string() + ": not valid JSON: " + e.what());
+  }
+  return parse_scene(j, path.string());
+}
+
+}  // namespace geosph

@@ -1,0 +1,120 @@
+#include "sim/simulation.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "boundary/geometry.hpp"
+#include "io/json_fields.hpp"
+
+namespace geosph {
+
+Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
+  validate_scene(scene_);
+  P_ = build_particles(scene_);
+  n_fluid_ = P_.count(Kind::Fluid);
+  if (n_fluid_ == 0) throw InputError(scene_.file + ": field 'bodies': the scene creates no fluid particles (bodies smaller than dx?)");
+  fluid_ = std::make_unique<FluidForces>(scene_);
+  if (P_.count(Kind::DummyWall) > 0) {
+    dummy_walls_ = std::make_unique<DummyWalls>(scene_, *fluid_);
+    dummy_walls_->allocate(P_);
+  }
+  for (const auto& m : scene_.materials) rho0_.push_back(m.density);
+  bounds_.max_speed = fluid_->max_sound_speed();
+  bounds_.max_density_variation = scene_.max_density_variation;
+  limits_ = {scene_.cfl, scene_.force_factor, scene_.viscous_factor};
+  const long outside = cells_.build(P_, scene_.domain, scene_.support());
+  if (outside >= 0)
+    throw InputError(scene_.file + ": field 'domain': particle " + std::to_string(P_.id[outside]) + " at (" +
+                     std::to_string(P_.x[outside]) + ", " + std::to_string(P_.y[outside]) + ", " +
+                     std::to_string(P_.z[outside]) + ") starts outside the domain");
+  neighbour_search();
+  forces();
+  state_ = check_state(P_, scene_.domain, rho0_, bounds_, step_, t_);
+  choose_time_step();
+}
+
+std::array<double, 3> Simulation::gravity_at(double t) const {
+  double f = 1.0;
+  if (scene_.gravity_ramp > 0 && t < scene_.gravity_ramp)
+    f = 0.5 * (std::sin((-0.5 + t / scene_.gravity_ramp) * std::numbers::pi) + 1.0);
+  return {f * scene_.gravity[0], f * scene_.gravity[1], f * scene_.gravity[2]};
+}
+
+void Simulation::neighbour_search() {
+  const long outside = cells_.build(P_, scene_.domain, scene_.support());
+  if (outside >= 0) {
+    Diagnosis d;
+    const auto i = static_cast<std::size_t>(outside);
+    d.step = step_; d.time = t_; d.particle_id = P_.id[i];
+    d.x = P_.x[i]; d.y = P_.y[i]; d.z = P_.z[i];
+    d.quantity = "particle left the domain (or its position is not finite)";
+    throw InstabilityError(d);
+  }
+  if (scene_.reorder_every > 0 && step_ % scene_.reorder_every == 0) {
+    P_.permute(cells_.sorted());
+    cells_.mark_permuted();
+  }
+}
+
+void Simulation::forces() {
+  const auto g = gravity_at(t_);
+  fluid_->update_pressure(P_);
+  if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
+  fluid_->momentum(P_, cells_, g);
+}
+
+void Simulation::choose_time_step() {
+  TimeStepInput in;
+  in.h = scene_.h();
+  in.c_max = fluid_->max_sound_speed();
+  in.v_max = state_.v_max;
+  in.a_max = state_.a_max;
+  in.nu_max = fluid_->max_kinematic_viscosity();
+  dt_ = stable_time_step(in, limits_);
+  if (t_ + dt_ > scene_.t_end) dt_ = std::max(scene_.t_end - t_, 1e-300);
+}
+
+void Simulation::step() {
+  const std::size_t n = P_.size();
+  const double half = 0.5 * dt_, dt = dt_;
+  const auto& dom = scene_.domain;
+  auto& P = P_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
+    P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
+    double* q[3] = {&P.x[i], &P.y[i], &P.z[i]};
+    for (int a = 0; a < dom.dim; ++a) {
+      if (!dom.periodic[a]) continue;
+      if (*q[a] >= dom.hi[a]) *q[a] -= dom.length(a);
+      else if (*q[a] < dom.lo[a]) *q[a] += dom.length(a);
+    }
+  }
+  t_ += dt;
+  ++step_;
+  neighbour_search();
+  fluid_->continuity(P_, cells_);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (P.kind[i] == Kind::Fluid) P.rho[i] += dt * P.drho[i];
+  forces();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
+  }
+  state_ = check_state(P_, scene_.domain, rho0_, bounds_, step_, t_);
+  choose_time_step();
+}
+
+void Simulation::run(const std::function<void(const Simulation&)>& observe, double until) {
+  const double t_stop = until > 0 ? std::min(until, scene_.t_end) : scene_.t_end;
+  while (t_ < t_stop * (1 - 1e-12) && step_ < scene_.max_steps) {
+    if (t_ + dt_ > t_stop) dt_ = t_stop - t_;
+    step();
+    if (observe) observe(*this);
+  }
+}
+
+}  // namespace geosph

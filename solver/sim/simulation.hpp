@@ -1,0 +1,59 @@
+// The time loop. Builds only the modules the scene declares (fluid forces always for fluid
+// materials; dummy-wall extrapolation only if the scene has dummy walls) and advances them with a
+// kick-drift-kick (velocity Verlet) scheme, one force evaluation per step:
+//   v^{n+1/2} = v^n + dt/2 a^n,   rho^{n+1/2} = rho^n + dt/2 Drho^n,   x^{n+1} = x^n + dt v^{n+1/2},
+//   a^{n+1}, Drho^{n+1} from (x^{n+1}, v^{n+1/2}, rho^{n+1/2}),
+//   v^{n+1} = v^{n+1/2} + dt/2 a^{n+1},   rho^{n+1} = rho^{n+1/2} + dt/2 Drho^{n+1}.
+#pragma once
+#include <functional>
+#include <memory>
+
+#include "boundary/dummy_wall.hpp"
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+#include "core/time_step.hpp"
+#include "fluid/fluid_forces.hpp"
+#include "io/scene.hpp"
+#include "sim/stability.hpp"
+
+namespace geosph {
+
+class Simulation {
+ public:
+  explicit Simulation(Scene scene);
+
+  // Advances one step; throws InstabilityError with a diagnosis if the state blows up.
+  void step();
+  // Runs to scene.time.end (or `until`), calling `observe` after every step.
+  void run(const std::function<void(const Simulation&)>& observe = {}, double until = -1);
+
+  const Scene& scene() const { return scene_; }
+  const Particles& particles() const { return P_; }
+  Particles& particles() { return P_; }
+  double time() const { return t_; }
+  long steps() const { return step_; }
+  double dt() const { return dt_; }
+  std::size_t fluid_count() const { return n_fluid_; }
+  // Gravity at time t, ramped smoothly from zero over scene.gravity_ramp (Adami et al. 2012, eq. 33).
+  std::array<double, 3> gravity_at(double t) const;
+
+ private:
+  void neighbour_search();  // cell list (and, every reorder_every steps, particles sorted by cell)
+  void forces();            // pressure, wall extrapolation, momentum at the current state
+  void choose_time_step();
+
+  Scene scene_;
+  Particles P_;
+  CellList cells_;
+  std::unique_ptr<FluidForces> fluid_;
+  std::unique_ptr<DummyWalls> dummy_walls_;
+  std::vector<double> rho0_;
+  StateBounds bounds_;
+  TimeStepLimits limits_;
+  StateSummary state_;
+  std::size_t n_fluid_ = 0;
+  double t_ = 0, dt_ = 0;
+  long step_ = 0;
+};
+
+}  // namespace geosph

@@ -1,0 +1,77 @@
+#include "harness/case_config.hpp"
+
+#include <cstdlib>
+#include <fstream>
+
+#include "io/json_fields.hpp"
+
+namespace geosph::verify {
+
+namespace {
+nlohmann::json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  if (!in) throw InputError(p.string() + ": cannot open");
+  try {
+    return nlohmann::json::parse(in, nullptr, true, true);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(p.string() + ": not valid JSON: " + e.what());
+  }
+}
+}  // namespace
+
+std::filesystem::path default_data_dir() {
+  if (const char* env = std::getenv("GEOSPH_DATA_DIR")) return env;
+  return GEOSPH_DEFAULT_DATA_DIR;
+}
+
+CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
+  CaseConfig c;
+  c.name = name;
+  c.dir = ctx.data_dir / "verification" / "cases" / name;
+  const auto file = (c.dir / "case.json").string();
+  const nlohmann::json j = read_json(file);
+  JsonFields f(j, file, "");
+  c.title = f.text("title");
+  auto ref = f.object("reference");
+  ref.choice("kind", {"analytical", "experimental", "dem"});
+  ref.text("source");
+  c.reference = j.at("reference");
+  auto levels = f.object("levels");
+  if (!levels.has(ctx.level)) levels.fail(ctx.level, "this case has no '" + ctx.level + "' level");
+  levels.object(ctx.level);
+  c.level = j.at("levels").at(ctx.level);
+  auto tol = f.object("tolerances");
+  for (const auto& key : tol.keys()) {
+    auto t = tol.object(key);
+    c.tolerances[key] = {t.number("value", Range::non_negative()), t.text("why")};
+    t.reject_unknown();
+  }
+  c.spec = j;
+  c.scene_json = read_json(c.dir / "scene.json");
+  return c;
+}
+
+const Tolerance& CaseConfig::tolerance(const std::string& metric) const {
+  auto it = tolerances.find(metric);
+  if (it == tolerances.end())
+    throw InputError((dir / "case.json").string() + ": field 'tolerances." + metric + "': is missing (required)");
+  return it->second;
+}
+
+double CaseConfig::level_number(const std::string& key) const {
+  if (!level.contains(key) || !level[key].is_number())
+    throw InputError((dir / "case.json").string() + ": field 'levels.<level>." + key + "': must be a number");
+  return level[key].get<double>();
+}
+
+Scene CaseConfig::scene(double dx) const {
+  nlohmann::json j = scene_json;
+  j["dx"] = dx;
+  return parse_scene(j, (dir / "scene.json").string());
+}
+
+std::filesystem::path CaseConfig::reference_file(const CaseContext& ctx, const std::string& relative) const {
+  return ctx.data_dir / "reference" / relative;
+}
+
+}  // namespace geosph::verify

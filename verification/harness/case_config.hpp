@@ -1,0 +1,44 @@
+// A catalogue case on disk: verification/cases/<name>/case.json (title, reference and its source,
+// resolution per level, every tolerance with the reason it has that value) and scene.json.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scene.hpp"
+
+namespace geosph::verify {
+
+struct Tolerance {
+  double value = 0;
+  std::string why;
+};
+
+struct CaseContext {
+  std::filesystem::path data_dir;  // holds verification/ and reference/
+  std::string level = "quick";
+  int threads = 1;
+  bool progress = false;
+};
+
+struct CaseConfig {
+  std::string name, title;
+  std::filesystem::path dir;
+  nlohmann::json reference, level;  // level: the entry of "levels" for the requested level
+  std::map<std::string, Tolerance> tolerances;
+  nlohmann::json scene_json;
+  nlohmann::json spec;  // the whole case.json, for case-specific fields
+
+  const Tolerance& tolerance(const std::string& metric) const;
+  double level_number(const std::string& key) const;
+  // The case's scene with its particle spacing set to dx.
+  Scene scene(double dx) const;
+  std::filesystem::path reference_file(const CaseContext& ctx, const std::string& relative) const;
+};
+
+CaseConfig load_case(const CaseContext& ctx, const std::string& name);
+std::filesystem::path default_data_dir();
+
+}  // namespace geosph::verify

@@ -1,0 +1,27 @@
+#include "harness/catalogue.hpp"
+
+#include "cases/dam_break_2d/dam_break_2d.hpp"
+#include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
+#include "cases/poiseuille_flow/poiseuille_flow.hpp"
+
+namespace geosph::verify {
+
+const std::vector<CaseEntry>& catalogue() {
+  static const std::vector<CaseEntry> cases = {
+      {"hydrostatic_tank", run_hydrostatic_tank},
+      {"poiseuille_flow", run_poiseuille_flow},
+      {"dam_break_2d", run_dam_break_2d},
+  };
+  return cases;
+}
+
+Record start_record(const CaseConfig& cfg, const CaseContext& ctx) {
+  Record r;
+  r.case_name = cfg.name;
+  r.title = cfg.title;
+  r.level = ctx.level;
+  r.reference = cfg.reference;
+  return r;
+}
+
+}  // namespace geosph::verify

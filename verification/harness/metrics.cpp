@@ -1,0 +1,95 @@
+#include "harness/metrics.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/json_fields.hpp"
+
+namespace geosph::verify {
+
+double relative_l2(const std::vector<double>& sim, const std::vector<double>& ref) {
+  if (sim.size() != ref.size() || ref.empty()) throw std::invalid_argument("relative_l2: size mismatch");
+  double num = 0, den = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    num += (sim[k] - ref[k]) * (sim[k] - ref[k]);
+    den += ref[k] * ref[k];
+  }
+  return std::sqrt(num / den);
+}
+
+double scaled_rms(const std::vector<double>& sim, const std::vector<double>& ref, double scale) {
+  if (sim.size() != ref.size() || ref.empty()) throw std::invalid_argument("scaled_rms: size mismatch");
+  double s = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) s += (sim[k] - ref[k]) * (sim[k] - ref[k]);
+  return std::sqrt(s / ref.size()) / scale;
+}
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double xq) {
+  if (x.empty()) throw std::invalid_argument("interpolate: empty series");
+  if (xq <= x.front()) return y.front();
+  if (xq >= x.back()) return y.back();
+  std::size_t k = 1;
+  while (x[k] < xq) ++k;
+  const double w = (xq - x[k - 1]) / (x[k] - x[k - 1]);
+  return (1 - w) * y[k - 1] + w * y[k];
+}
+
+double observed_order(double dx1, double e1, double dx2, double e2) { return std::log(e1 / e2) / std::log(dx1 / dx2); }
+
+const std::vector<double>& Csv::column(const std::string& name) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] == name) return data[c];
+  throw InputError(file + ": no column '" + name + "'");
+}
+
+std::string Csv::comment(const std::string& key) const {
+  for (const auto& line : header_comments) {
+    const auto pos = line.find(':');
+    if (pos != std::string::npos && line.substr(0, pos) == key) {
+      auto v = line.substr(pos + 1);
+      return v.substr(v.find_first_not_of(' ') == std::string::npos ? 0 : v.find_first_not_of(' '));
+    }
+  }
+  return "";
+}
+
+Csv read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open reference data");
+  Csv csv;
+  csv.file = path;
+  std::string line;
+  long row = 0;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      auto s = line.substr(1);
+      csv.header_comments.push_back(s.substr(s.find_first_not_of(' ') == std::string::npos ? 0 : s.find_first_not_of(' ')));
+      continue;
+    }
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<std::string> cells;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    if (csv.columns.empty()) {
+      csv.columns = cells;
+      csv.data.resize(cells.size());
+      continue;
+    }
+    if (cells.size() != csv.columns.size()) throw InputError(path + ": line " + std::to_string(row) + ": wrong number of columns");
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      try {
+        csv.data[c].push_back(std::stod(cells[c]));
+      } catch (const std::exception&) {
+        throw InputError(path + ": line " + std::to_string(row) + ": '" + cells[c] + "' is not a number");
+      }
+    }
+  }
+  if (csv.columns.empty() || csv.data[0].empty()) throw InputError(path + ": no data rows");
+  return csv;
+}
+
+}  // namespace geosph::verify

@@ -1,0 +1,28 @@
+// Error measures shared by the catalogue cases.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geosph::verify {
+
+// sqrt( sum (a - b)^2 / sum b^2 )
+double relative_l2(const std::vector<double>& sim, const std::vector<double>& ref);
+// sqrt( mean (a - b)^2 ) / scale
+double scaled_rms(const std::vector<double>& sim, const std::vector<double>& ref, double scale);
+// Piecewise-linear interpolation of (x, y) at xq (x increasing); clamps outside the range.
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double xq);
+// Observed order p from errors e1 (spacing dx1) and e2 (dx2): e ~ dx^p.
+double observed_order(double dx1, double e1, double dx2, double e2);
+
+// Two-column numeric CSV; lines starting with '#' are the provenance header (returned).
+struct Csv {
+  std::vector<std::string> header_comments, columns;
+  std::vector<std::vector<double>> data;  // data[column][row]
+  const std::vector<double>& column(const std::string& name) const;
+  std::string comment(const std::string& key) const;  // value of a '# key: value' line
+  std::string file;
+};
+Csv read_csv(const std::string& path);
+
+}  // namespace geosph::verify

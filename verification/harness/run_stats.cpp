@@ -1,0 +1,63 @@
+#include "harness/run_stats.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "sim/progress.hpp"
+
+namespace geosph::verify {
+
+bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simulation&)>& observe, bool progress,
+               double until) {
+  const Scene& s = sim.scene();
+  rec.dx = s.dx;
+  rec.dimension = s.dim;
+  rec.particles = static_cast<long>(sim.fluid_count());
+  rec.wall_particles = static_cast<long>(sim.particles().size() - sim.fluid_count());
+  rec.threads = omp_get_max_threads();
+  const auto& m = s.materials.front();
+  rec.options["kernel"] = kernel_name(s.kernel);
+  rec.options["h_over_dx"] = s.h_over_dx;
+  rec.options["boundary"] = s.has_walls() ? s.walls.type : "none";
+  rec.options["wall_slip"] = s.walls.slip;
+  rec.options["artificial_viscosity"] = m.artificial_viscosity;
+  rec.options["density_diffusion"] = m.density_diffusion;
+  rec.options["sound_speed"] = m.sound_speed;
+  const long steps0 = sim.steps();
+  Progress bar(s.t_end, progress);
+  const auto t0 = std::chrono::steady_clock::now();
+  bool ok = true;
+  try {
+    sim.run([&](const Simulation& sm) {
+      if (observe) observe(sm);
+      bar.update(sm.steps(), sm.time());
+    }, until);
+  } catch (const InstabilityError& e) {
+    ok = false;
+    rec.stable = false;
+    rec.failure = {{"step", e.diagnosis.step}, {"time", e.diagnosis.time}, {"message", e.what()}};
+    std::fprintf(stderr, "%s\n", e.what());
+  }
+  bar.finish(sim.steps(), sim.time());
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rec.steps += sim.steps() - steps0;
+  rec.wall_s += wall;
+  rec.particle_steps_per_s = rec.wall_s > 0 ? rec.particles * static_cast<double>(rec.steps) / rec.wall_s : 0;
+  return ok;
+}
+
+nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points) {
+  const auto& P = sim.particles();
+  const std::size_t stride = std::max<std::size_t>(1, sim.fluid_count() / max_points + 1);
+  nlohmann::json x = nlohmann::json::array(), y = nlohmann::json::array(), v = nlohmann::json::array();
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Fluid || (k++ % stride) != 0) continue;
+    x.push_back(P.x[i]); y.push_back(P.y[i]); v.push_back(P.p[i]);
+  }
+  return {{"x", x}, {"y", y}, {"values", v}, {"field", "pressure"}, {"units", "Pa"}};
+}
+
+}  // namespace geosph::verify

@@ -1,0 +1,19 @@
+// Runs a case's simulation, timing it, and records speed and stability in the result record.
+#pragma once
+#include <functional>
+
+#include "harness/record.hpp"
+#include "sim/simulation.hpp"
+
+namespace geosph::verify {
+
+// Runs to the scene's end time calling `observe` after every step. Fills steps, wall_s,
+// particle_steps_per_s (fluid particles x steps / wall time), resolution and options; on a blow-up
+// sets stable = false with the diagnosis and returns false.
+bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simulation&)>& observe,
+               bool progress, double until = -1);
+
+// Final particle snapshot (fluid only, at most max_points) coloured by pressure.
+nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points = 6000);
+
+}  // namespace geosph::verify
