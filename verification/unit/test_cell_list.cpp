@@ -1,0 +1,110 @@
+// Cell-linked list against brute force on random particles, including particles on the domain
+// edges, in 2D and 3D, with and without periodic axes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "core/cell_list.hpp"
+
+using namespace geosph;
+
+namespace {
+
+Particles random_particles(const Box& box, int n, unsigned seed) {
+  Particles P;
+  P.dim = box.dim;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto at = [&](int a, double f) { return box.lo[a] + f * box.length(a); };
+  for (int i = 0; i < n; ++i) {
+    double c[3] = {0, 0, 0};
+    for (int a = 0; a < box.dim; ++a) c[a] = at(a, u(rng));
+    // every 10th particle sits exactly on a lower face or just inside an upper face
+    if (i % 10 == 0) c[i % box.dim] = box.lo[i % box.dim];
+    if (i % 10 == 5) c[i % box.dim] = std::nextafter(box.hi[i % box.dim], box.lo[i % box.dim]);
+    P.add(c[0], c[1], c[2], 1.0, 1.0, Kind::Fluid, 0);
+  }
+  return P;
+}
+
+double min_image(double d, const Box& box, int a) {
+  if (!box.periodic[a]) return d;
+  const double L = box.length(a);
+  return d - L * std::round(d / L);
+}
+
+void compare_with_brute_force(const Box& box, double radius, int n, unsigned seed, bool permute) {
+  Particles P = random_particles(box, n, seed);
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, radius), -1);
+  if (permute) {
+    P.permute(cl.sorted());
+    cl.mark_permuted();
+  }
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    std::set<std::size_t> expect, got;
+    for (std::size_t j = 0; j < P.size(); ++j) {
+      if (j == i) continue;
+      const double dx = min_image(P.x[i] - P.x[j], box, 0), dy = min_image(P.y[i] - P.y[j], box, 1),
+                   dz = min_image(P.z[i] - P.z[j], box, 2);
+      if (dx * dx + dy * dy + dz * dz < radius * radius) expect.insert(j);
+    }
+    cl.for_each_neighbor(P, i, [&](std::size_t j, double dx, double dy, double dz, double r2) {
+      EXPECT_TRUE(got.insert(j).second) << "neighbour " << j << " visited twice";
+      EXPECT_NEAR(r2, dx * dx + dy * dy + dz * dz, 1e-15);
+      EXPECT_NEAR(dx, min_image(P.x[i] - P.x[j], box, 0), 1e-12);
+    });
+    EXPECT_EQ(got, expect) << "particle " << i << " at (" << P.x[i] << ", " << P.y[i] << ", " << P.z[i] << ")";
+    pairs += got.size();
+  }
+  EXPECT_GT(pairs, 0u);
+}
+
+}  // namespace
+
+TEST(CellList, MatchesBruteForce2D) {
+  Box box; box.dim = 2; box.lo = {-0.3, 0.1, 0}; box.hi = {0.7, 0.65, 0};
+  compare_with_brute_force(box, 0.06, 1500, 1, false);
+  compare_with_brute_force(box, 0.06, 1500, 2, true);
+}
+
+TEST(CellList, MatchesBruteForce3D) {
+  Box box; box.dim = 3; box.lo = {0, 0, 0}; box.hi = {0.5, 0.4, 0.3};
+  compare_with_brute_force(box, 0.07, 1200, 3, true);
+}
+
+TEST(CellList, MatchesBruteForcePeriodic) {
+  Box box; box.dim = 2; box.lo = {0, 0, 0}; box.hi = {0.3, 0.5, 0}; box.periodic = {true, false, false};
+  compare_with_brute_force(box, 0.08, 800, 4, false);
+  Box box3; box3.dim = 3; box3.lo = {0, 0, 0}; box3.hi = {0.3, 0.3, 0.3}; box3.periodic = {true, true, true};
+  compare_with_brute_force(box3, 0.09, 800, 5, true);
+}
+
+TEST(CellList, SortedIsAPermutationGroupedByCell) {
+  Box box; box.dim = 2; box.lo = {0, 0, 0}; box.hi = {1, 1, 0};
+  Particles P = random_particles(box, 500, 6);
+  CellList cl;
+  cl.build(P, box, 0.1);
+  std::vector<std::uint32_t> s = cl.sorted();
+  std::sort(s.begin(), s.end());
+  for (std::uint32_t k = 0; k < s.size(); ++k) ASSERT_EQ(s[k], k);
+  // consecutive particles in sorted order never go back to a lower cell
+  auto cell = [&](std::uint32_t i) { return static_cast<int>(P.y[i] / 0.1) * 10 + static_cast<int>(P.x[i] / 0.1); };
+  for (std::size_t k = 1; k < cl.sorted().size(); ++k) EXPECT_LE(cell(cl.sorted()[k - 1]), cell(cl.sorted()[k]));
+}
+
+TEST(CellList, ReportsParticleOutsideTheBox) {
+  Box box; box.dim = 2; box.lo = {0, 0, 0}; box.hi = {1, 1, 0};
+  Particles P = random_particles(box, 50, 7);
+  P.x[17] = 1.0;  // the upper face is outside (half-open box)
+  CellList cl;
+  EXPECT_EQ(cl.build(P, box, 0.1), 17);
+  P.x[17] = 0.5;
+  P.y[3] = std::nan("");
+  EXPECT_EQ(cl.build(P, box, 0.1), 3);
+}

@@ -1,0 +1,47 @@
+// Tait equation of state: inverse consistency and the closed-form hydrostatic column against the
+// independent GSL integration in reference/analytical/hydrostatic_tait.
+#include <gtest/gtest.h>
+
+#include "analytical/hydrostatic_tait.hpp"
+#include "fluid/equation_of_state.hpp"
+
+using namespace geosph;
+
+namespace {
+FluidMaterial water(double c0) {
+  FluidMaterial m;
+  m.name = "water"; m.density = 1000; m.sound_speed = c0; m.gamma = 7;
+  return m;
+}
+}  // namespace
+
+TEST(TaitEos, PressureAndDensityAreInverse) {
+  const TaitEos eos(water(20));
+  EXPECT_DOUBLE_EQ(eos.pressure(1000), 0.0);
+  for (double rho : {980.0, 1000.0, 1003.0, 1050.0}) EXPECT_NEAR(eos.density(eos.pressure(rho)), rho, 1e-9);
+  // linearised: dp/drho = c0^2 at rho0
+  EXPECT_NEAR((eos.pressure(1000.001) - eos.pressure(999.999)) / 0.002, 400.0, 1e-3);
+}
+
+TEST(TaitEos, HydrostaticClosedFormMatchesOdeIntegration) {
+  const double g = 9.81, H0 = 0.4;
+  const TaitEos eos(water(20));
+  const reference::HydrostaticTait ref(1000, 20, 7, g, H0);
+  for (double depth : {0.0, 0.05, 0.2, 0.39})
+    EXPECT_NEAR(eos.hydrostatic_pressure(g, depth), ref.pressure_at_depth(depth), 1e-7 * 1000 * g * H0);
+}
+
+TEST(TaitEos, IncompressibleLimitIsRhoGH) {
+  const TaitEos eos(water(1e5));
+  EXPECT_NEAR(eos.hydrostatic_pressure(9.81, 0.5), 1000 * 9.81 * 0.5, 1e-6 * 4905);
+  const reference::HydrostaticTait ref(1000, 1e5, 7, 9.81, 0.5);
+  EXPECT_NEAR(ref.surface_height(), 0.5, 1e-9);
+}
+
+TEST(HydrostaticTait, CompressedColumnConservesMass) {
+  // a compressible column settles below its uniform-density height H0
+  const reference::HydrostaticTait ref(1000, 10, 7, 9.81, 0.4);
+  EXPECT_LT(ref.surface_height(), 0.4);
+  EXPECT_GT(ref.surface_height(), 0.4 * (1 - 0.05));
+  EXPECT_NEAR(ref.pressure(ref.surface_height()), 0.0, 1e-9);
+}

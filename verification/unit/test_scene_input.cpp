@@ -1,0 +1,151 @@
+// Bad input: every kind of mistake gives one clear InputError naming the file, the field and what
+// is allowed; through the `geosph` command it exits non-zero and leaves no output directory.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/json_fields.hpp"
+#include "io/scene.hpp"
+
+using namespace geosph;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+json valid_scene() {
+  return json::parse(R"({
+    "name": "tank", "dimension": 2, "dx": 0.02,
+    "kernel": {"type": "wendland_c2"},
+    "domain": {"min": [-0.1, -0.1], "max": [0.5, 0.5]},
+    "gravity": [0, -9.81],
+    "time": {"end": 0.01},
+    "materials": {"water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
+    "bodies": [{"material": "water", "shape": "box", "min": [0, 0], "max": [0.2, 0.2]}],
+    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.3, 0.3], "open": ["top"]}]}
+  })");
+}
+
+// Expects parse_scene to throw an InputError whose message names the file and contains `field`
+// and `allowed`.
+void expect_error(const json& j, const std::string& field, const std::string& allowed) {
+  try {
+    parse_scene(j, "bad.json");
+    ADD_FAILURE() << "no error for field " << field;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind("bad.json: field '", 0), 0u) << msg;
+    EXPECT_NE(msg.find(field), std::string::npos) << msg;
+    EXPECT_NE(msg.find(allowed), std::string::npos) << msg;
+  }
+}
+
+}  // namespace
+
+TEST(SceneInput, ValidSceneParses) {
+  const Scene s = parse_scene(valid_scene(), "ok.json");
+  EXPECT_EQ(s.dim, 2);
+  EXPECT_DOUBLE_EQ(s.dx, 0.02);
+  EXPECT_EQ(s.materials.size(), 1u);
+}
+
+TEST(SceneInput, UnknownField) {
+  auto j = valid_scene();
+  j["time"]["endd"] = 1.0;
+  expect_error(j, "time.endd", "is not a known field here (known: ");
+  j = valid_scene();
+  j["materials"]["water"]["viscosity"] = 1e-6;
+  expect_error(j, "materials.water.viscosity", "kinematic_viscosity");
+}
+
+TEST(SceneInput, MissingField) {
+  auto j = valid_scene();
+  j.erase("dx");
+  expect_error(j, "'dx'", "is missing (required)");
+  j = valid_scene();
+  j["materials"]["water"].erase("sound_speed");
+  expect_error(j, "materials.water.sound_speed", "is missing");
+}
+
+TEST(SceneInput, WrongType) {
+  auto j = valid_scene();
+  j["dx"] = "0.02";
+  expect_error(j, "'dx'", "must be a number");
+  j = valid_scene();
+  j["domain"]["min"] = {0.0};
+  expect_error(j, "domain.min", "must be an array of 2 finite numbers, got [0.0]");
+}
+
+TEST(SceneInput, NonPositiveSpacingOrDensity) {
+  auto j = valid_scene();
+  j["dx"] = 0.0;
+  expect_error(j, "'dx'", "> 0");
+  j["dx"] = -0.01;
+  expect_error(j, "'dx'", "got -0.01");
+  j = valid_scene();
+  j["materials"]["water"]["density"] = -1000;
+  expect_error(j, "materials.water.density", "> 0");
+}
+
+TEST(SceneInput, ParticlesOutsideTheDomain) {
+  auto j = valid_scene();
+  j["bodies"][0]["max"] = {0.2, 0.7};
+  expect_error(j, "bodies[0]", "outside the domain");
+  j = valid_scene();
+  j["walls"]["containers"][0]["min"] = {-0.09, 0.0};
+  expect_error(j, "walls.containers[0]", "outside the domain");
+}
+
+TEST(SceneInput, UnknownKernel) {
+  auto j = valid_scene();
+  j["kernel"]["type"] = "gaussian";
+  expect_error(j, "kernel.type", "must be one of {cubic_spline, wendland_c2, quintic_spline}");
+}
+
+TEST(SceneInput, OutOfRangeValues) {
+  auto j = valid_scene();
+  j["materials"]["water"]["artificial_viscosity"] = 2.0;
+  expect_error(j, "materials.water.artificial_viscosity", "[0, 1]");
+  j = valid_scene();
+  j["dimension"] = 4;
+  expect_error(j, "dimension", "integer in [2, 3]");
+  j = valid_scene();
+  j["bodies"][0]["material"] = "oil";
+  expect_error(j, "bodies[0].material", "names no material");
+}
+
+TEST(SceneInput, FileThatIsNotJson) {
+  const fs::path dir = fs::temp_directory_path() / "geosph_scene_input";
+  fs::create_directories(dir);
+  std::ofstream(dir / "broken.json") << "{ \"dx\": 0.01, ";
+  try {
+    load_scene(dir / "broken.json");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.json: not valid JSON"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load_scene(dir / "missing.json"), InputError);
+}
+
+// Through the command line: exit code, message on stderr, and no output directory created.
+TEST(SceneInput, CommandLineRejectsBadSceneWithoutWritingOutput) {
+  const fs::path dir = fs::temp_directory_path() / "geosph_cli_bad_input";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  auto j = valid_scene();
+  j["dx"] = -1;
+  std::ofstream(dir / "scene.json") << j.dump(2);
+  const fs::path out = dir / "out", err = dir / "stderr.txt";
+  const std::string cmd = std::string(GEOSPH_EXE) + " run " + (dir / "scene.json").string() + " --out " +
+                          out.string() + " --quiet 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  EXPECT_NE(status, 0);
+  EXPECT_FALSE(fs::exists(out)) << "output directory left behind";
+  std::stringstream msg;
+  msg << std::ifstream(err).rdbuf();
+  EXPECT_NE(msg.str().find("scene.json: field 'dx': must be > 0, got -1"), std::string::npos) << msg.str();
+}
