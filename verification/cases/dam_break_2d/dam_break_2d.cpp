@@ -16,12 +16,13 @@
 namespace geosph::verify {
 
 namespace {
-// Front = largest x of the fluid particles within 2 dx of the floor (ignores isolated spray).
+// Front = largest x of the fluid particles within 2 dx of the floor (ignores isolated spray),
+// plus dx/2: a particle centre sits half a spacing behind the edge of the volume it represents.
 double front_position(const Particles& P, double floor_y, double dx) {
   double xmax = -1e300;
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::Fluid && P.y[i] < floor_y + 2 * dx) xmax = std::max(xmax, P.x[i]);
-  return xmax;
+  return xmax + 0.5 * dx;
 }
 
 // Least-squares slope dZ/dT of the points with z_lo <= Z <= z_hi (GSL linear fit).

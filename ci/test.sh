@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The test command: installs dependencies, builds, and runs the default test set (unit tests,
+# report-generator tests and the verification catalogue at its quick level). Heavier studies
+# carry the ctest label `convergence` and are excluded here; run them with
+#   ctest --test-dir build -L convergence
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
+bash "$ROOT/ci/build.sh"
+ctest --test-dir "$BUILD_DIR" -LE convergence --output-on-failure
