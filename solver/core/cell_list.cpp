@@ -15,8 +15,8 @@ long CellList::build(const Particles& P, const Box& box, double radius) {
     lo_[a] = box.lo[a];
     len_[a] = box.length(a);
     periodic_[a] = box.periodic[a];
-    nc_[a] = std::max(1, static_cast<int>(std::floor(len_[a] / radius)));
-    if (periodic_[a] && nc_[a] < 3)
+    nc_[a] = std::max(1, static_cast<int>(std::floor(kStencil * len_[a] / radius)));
+    if (periodic_[a] && nc_[a] < 2 * kStencil + 1)
       throw std::invalid_argument("periodic axis " + std::to_string(a) + " is shorter than 3 kernel supports");
     inv_cell_[a] = nc_[a] / len_[a];
   }

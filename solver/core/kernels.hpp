@@ -37,6 +37,13 @@ struct CubicSpline {
     if (q < 2.0) { const double t = 2.0 - q; return -sigma * inv_h * 0.75 * t * t; }
     return 0.0;
   }
+  // dW/dr / r without a division (grad_i W_ij = gradW_over_r * r_ij); finite at r = 0
+  double gradW_over_r(double r) const {
+    const double q = r * inv_h;
+    if (q < 1.0) return sigma * inv_h * inv_h * (-3.0 + 2.25 * q);
+    if (q < 2.0) { const double t = 2.0 - q; return -sigma * inv_h * 0.75 * t * t / r; }
+    return 0.0;
+  }
 };
 
 struct WendlandC2 {
@@ -56,6 +63,12 @@ struct WendlandC2 {
     if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q;
     return -5.0 * sigma * inv_h * q * t * t * t;
+  }
+  double gradW_over_r(double r) const {
+    const double q = r * inv_h;
+    if (q >= 2.0) return 0.0;
+    const double t = 1.0 - 0.5 * q;
+    return -5.0 * sigma * inv_h * inv_h * t * t * t;
   }
 };
 
@@ -83,6 +96,7 @@ struct QuinticSpline {
     if (q < 1.0) d -= 75.0 * p4(1.0 - q);
     return sigma * inv_h * d;
   }
+  double gradW_over_r(double r) const { return r > 0 ? dWdr(r) / r : 0.0; }
 };
 
 using AnyKernel = std::variant<CubicSpline, WendlandC2, QuinticSpline>;

@@ -54,8 +54,7 @@ void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList&
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
       if (kj == Kind::RepulsiveWall) return;
-      const double r = std::sqrt(r2);
-      const double fw = kernel.dWdr(r) / r;  // grad_i W_ij = fw * r_ij
+      const double fw = kernel.gradW_over_r(std::sqrt(r2));  // grad_i W_ij = fw * r_ij
       const double mj = P.m[j];
       // walls enter with their own (prescribed) velocity, zero for fixed walls
       drho += mj * fw * ((vxi - P.vx[j]) * dx + (vyi - P.vy[j]) * dy + (vzi - P.vz[j]) * dz);
@@ -81,12 +80,17 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
   const double* wvz = has_wall_velocity ? P.field("wall_vz").data() : nullptr;
   const double D = repulsive_D_, r0 = repulsive_r0_;
   const auto bf = scene_.body_force;
+  // p/rho^2 once per particle (fluid and extrapolated walls) instead of once per pair
+  pressure_over_rho2_.resize(n);
+  double* pr2 = pressure_over_rho2_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) pr2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
 
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
     const FluidMaterial& mi = mats_[P.material[i]];
-    const double rhoi = P.rho[i], pi_r2 = P.p[i] / (rhoi * rhoi);
+    const double rhoi = P.rho[i], pi_r2 = pr2[i];
     const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double alpha_c = mi.artificial_viscosity * mi.sound_speed;
     const double mu_i = rhoi * mi.kinematic_viscosity;
@@ -101,12 +105,11 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
         }
         return;
       }
-      const double r = std::sqrt(r2);
-      const double fw = kernel.dWdr(r) / r;  // grad_i W_ij = fw * r_ij
+      const double fw = kernel.gradW_over_r(std::sqrt(r2));  // grad_i W_ij = fw * r_ij
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
       const double mj = P.m[j], rhoj = P.rho[j];
       const double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
-      double coef = mj * (pi_r2 + P.p[j] / (rhoj * rhoj));
+      double coef = mj * (pi_r2 + pr2[j]);
       const bool wall = kj == Kind::DummyWall;
       if (!(wall && free_slip_walls_)) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
         double vx = ux, vy = uy, vz = uz;

@@ -46,6 +46,7 @@ class FluidForces {
   std::vector<FluidMaterial> mats_;
   bool free_slip_walls_;
   double repulsive_D_, repulsive_r0_;
+  mutable std::vector<double> pressure_over_rho2_;  // scratch, per particle
 };
 
 }  // namespace geosph

@@ -55,7 +55,6 @@ void BM_DamBreak2D(benchmark::State& state) {
   const double total = static_cast<double>(sim.particles().size());
   state.counters["fluid"] = fluid;
   state.counters["total"] = total;  // fluid + dummy wall particles
-  state.counters["threads"] = threads;
   state.counters["particle_steps_per_s"] =
       benchmark::Counter(fluid * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   // Wall-clock time per fluid particle-step (printed with an SI prefix, e.g. 1.1us), to compare

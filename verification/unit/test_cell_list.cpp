@@ -94,7 +94,11 @@ TEST(CellList, SortedIsAPermutationGroupedByCell) {
   std::sort(s.begin(), s.end());
   for (std::uint32_t k = 0; k < s.size(); ++k) ASSERT_EQ(s[k], k);
   // consecutive particles in sorted order never go back to a lower cell
-  auto cell = [&](std::uint32_t i) { return static_cast<int>(P.y[i] / 0.1) * 10 + static_cast<int>(P.x[i] / 0.1); };
+  const auto nc = cl.cells();
+  EXPECT_GE(1.0 / nc[0], 0.1 / 2);  // cells are at least half the search radius wide
+  auto cell = [&](std::uint32_t i) {
+    return static_cast<int>(P.y[i] * nc[1]) * nc[0] + static_cast<int>(P.x[i] * nc[0]);
+  };
   for (std::size_t k = 1; k < cl.sorted().size(); ++k) EXPECT_LE(cell(cl.sorted()[k - 1]), cell(cl.sorted()[k]));
 }
 

@@ -60,6 +60,8 @@ TEST_P(KernelTest, DerivativeMatchesFiniteDifference) {
     const double r = q * h;
     const double fd = (W(k, r + eps) - W(k, r - eps)) / (2 * eps);
     EXPECT_NEAR(dW(k, r), fd, 1e-6 * (1 + std::abs(fd))) << "q = " << q;
+    const double g = std::visit([r](const auto& kk) { return kk.gradW_over_r(r); }, k);
+    EXPECT_NEAR(g * r, dW(k, r), 1e-12 * (1 + std::abs(fd))) << "q = " << q;
   }
   EXPECT_LE(dW(k, 0.3 * h), 0.0);  // monotonically decreasing
 }
