@@ -29,7 +29,7 @@ int cmd_run(const std::string& scene_path, const std::string& out_dir, bool quie
   Simulation sim(scene);
   Hdf5Output out(out_dir);
   std::fprintf(stderr, "geosph run: %s, %zu fluid + %zu wall particles, %s kernel, %d thread(s)\n", scene.name.c_str(),
-               sim.fluid_count(), sim.particles().size() - sim.fluid_count(), kernel_name(scene.kernel).c_str(),
+               sim.moving_count(), sim.particles().size() - sim.moving_count(), kernel_name(scene.kernel).c_str(),
                omp_get_max_threads());
   out.write(sim.particles(), sim.time(), sim.steps());
   double next_out = scene.output_interval > 0 ? scene.output_interval : 1e300;
@@ -55,9 +55,9 @@ int cmd_run(const std::string& scene_path, const std::string& out_dir, bool quie
   }
   bar.finish(sim.steps(), sim.time());
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double rate = wall > 0 ? sim.fluid_count() * static_cast<double>(sim.steps()) / wall : 0;
+  const double rate = wall > 0 ? sim.moving_count() * static_cast<double>(sim.steps()) / wall : 0;
   nlohmann::json summary = {{"scene", scene.name}, {"steps", sim.steps()}, {"time", sim.time()}, {"wall_s", wall},
-                            {"fluid_particles", sim.fluid_count()}, {"particles", sim.particles().size()},
+                            {"material_particles", sim.moving_count()}, {"particles", sim.particles().size()},
                             {"particle_steps_per_s", rate}, {"threads", omp_get_max_threads()},
                             {"snapshots", out.snapshots()}, {"stable", rc == 0}};
   std::ofstream(fs::path(out_dir) / "summary.json") << summary.dump(2) << "\n";
@@ -86,7 +86,7 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
     }
   }
   fs::create_directories(out_dir);
-  int failed = 0, passed = 0;
+  int failed = 0, passed = 0, studies = 0;
   for (const auto* c : todo) {
     std::fprintf(stderr, "== %s (%s)\n", c->name.c_str(), level.c_str());
     const auto records = c->run(ctx);
@@ -99,13 +99,14 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
       for (const auto& m : r.metrics)
         std::printf("%-18s dx=%-9.4g %-32s %-12.5g tol %-10.4g %s\n", c->name.c_str(), r.dx, m.name.c_str(), m.value,
                     m.tolerance, m.passed ? "PASS" : "FAIL");
-      std::printf("%-18s dx=%-9.4g %ld particles, %ld steps, %.2f s wall, %.3g particle-steps/s, %s\n",
+      std::printf("%-18s dx=%-9.4g %ld particles, %ld steps, %.2f s wall, %.3g particle-steps/s, %s%s\n",
                   c->name.c_str(), r.dx, r.particles, r.steps, r.wall_s, r.particle_steps_per_s,
-                  r.stable ? "stable" : "UNSTABLE");
-      (r.passed() ? passed : failed)++;
+                  r.stable ? "stable" : "UNSTABLE", r.scored ? "" : " (study, not scored)");
+      if (!r.scored) ++studies;
+      else (r.passed() ? passed : failed)++;
     }
   }
-  std::printf("verify: %d passed, %d failed\n", passed, failed);
+  std::printf("verify: %d passed, %d failed, %d unscored studies\n", passed, failed, studies);
   return failed == 0 ? 0 : 1;
 }
 

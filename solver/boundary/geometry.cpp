@@ -24,6 +24,33 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
         f(lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dx, dim == 3 ? lo[2] + (k + 0.5) * dx : 0.0);
 }
 
+// Soil body on the lattice. "geostatic": vertical stress -rho g depth and horizontal K0 times it
+// (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement).
+void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
+  std::uint16_t mat = 0;
+  while (s.soils[mat].name != b.material) ++mat;
+  const SoilMaterial& m = s.soils[mat];
+  const double vol = std::pow(s.dx, s.dim);
+  const int up = s.dim - 1;  // gravity acts along -y (2D) or -z (3D); checked in validate_scene
+  const double g = -s.gravity[up];
+  const double k0 = b.k0 > 0 ? b.k0 : m.poisson / (1.0 - m.poisson);
+  const bool geostatic = b.initial == "geostatic";
+  lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
+    P.add(x, y, z, m.density * vol, m.density, Kind::Soil, mat);
+    if (b.fixed) P.field("fixed").back() = 1.0;
+    else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
+    const std::size_t i = P.size() - 1;
+    if (geostatic) {
+      const double depth = b.hi[up] - (up == 1 ? y : z);
+      const double sv = -m.density * g * depth;
+      P.field("stress_xx")[i] = k0 * sv;
+      P.field(up == 1 ? "stress_yy" : "stress_zz")[i] = sv;
+      P.field(up == 1 ? "stress_zz" : "stress_yy")[i] = k0 * sv;
+      P.p[i] = -(1.0 + 2.0 * k0) * sv / 3.0;
+    }
+  });
+}
+
 }  // namespace
 
 Particles build_particles(const Scene& s) {
@@ -33,6 +60,10 @@ Particles build_particles(const Scene& s) {
   const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
 
   for (const auto& b : s.bodies) {
+    if (std::any_of(s.soils.begin(), s.soils.end(), [&](const SoilMaterial& m) { return m.name == b.material; })) {
+      add_soil_body(P, s, b);
+      continue;
+    }
     std::uint16_t mat = 0;
     while (s.materials[mat].name != b.material) ++mat;
     const TaitEos eos(s.materials[mat]);
@@ -57,7 +88,7 @@ Particles build_particles(const Scene& s) {
 
   const int L = wall_layers(s);
   const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
-  const double rho0 = s.materials.front().density;
+  const double rho0 = s.has_fluid() ? s.materials.front().density : s.soils.front().density;
   static const char* lo_side[3] = {"left", "bottom", "back"};
   static const char* hi_side[3] = {"right", "top", "front"};
   for (const auto& c : s.walls.containers) {
@@ -93,6 +124,14 @@ Particles build_particles(const Scene& s) {
       P.add(px, py, pz, rho0 * vol, rho0, wall, 0);
     });
   }
+  // Solid blocks of wall particles (a clamp, an obstacle) on the same lattice.
+  // They are marked in the optional field "wall_block" (1): a block holds what is embedded in it
+  // (a clamp), so its particles keep their own velocity instead of mirroring the material's.
+  for (const auto& b : s.walls.blocks)
+    lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
+      P.add(x, y, z, rho0 * vol, rho0, wall, 0);
+      P.field("wall_block").back() = 1.0;
+    });
   return P;
 }
 

@@ -9,9 +9,11 @@
 
 namespace geosph {
 
-enum class Kind : std::uint8_t { Fluid = 0, DummyWall = 1, RepulsiveWall = 2 };
+enum class Kind : std::uint8_t { Fluid = 0, DummyWall = 1, RepulsiveWall = 2, Soil = 3 };
 
-inline bool is_wall(Kind k) { return k != Kind::Fluid; }
+inline bool is_wall(Kind k) { return k == Kind::DummyWall || k == Kind::RepulsiveWall; }
+// particles the integrator moves (material particles); walls are fixed
+inline bool is_moving(Kind k) { return k == Kind::Fluid || k == Kind::Soil; }
 
 struct Particles {
   int dim = 2;

@@ -26,7 +26,38 @@ FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
   return m;
 }
 
+SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
+  SoilMaterial m;
+  m.name = name;
+  m.model = f.choice("model", {"drucker_prager", "linear_elastic"});
+  m.density = f.number("density", Range::positive());
+  m.young = f.number("young_modulus", Range::positive());
+  m.poisson = f.number("poisson_ratio", Range::open(-1.0, 0.5));
+  if (m.model == "drucker_prager") {
+    m.cohesion = f.number("cohesion", Range::non_negative(), 0.0);
+    m.friction_angle = f.number("friction_angle", Range{0, 90, false, true});
+    m.dilatancy_angle = f.number("dilatancy_angle", Range{0, 90, false, true}, 0.0);
+  }
+  if (m.dilatancy_angle > m.friction_angle)
+    f.fail("dilatancy_angle", "must not exceed friction_angle (" + std::to_string(m.friction_angle) + " deg), got " +
+                                  std::to_string(m.dilatancy_angle));
+  m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
+  m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
+  if (auto a = f.optional_object("artificial_stress")) {
+    m.artificial_stress = a->number("epsilon", Range::between(0, 1));
+    m.artificial_stress_exponent = a->number("exponent", Range::between(1, 10), 4.0);
+    a->reject_unknown();
+  }
+  f.reject_unknown();
+  return m;
+}
+
 }  // namespace
+
+double SoilMaterial::wave_speed() const {
+  const double K = young / (3.0 * (1.0 - 2.0 * poisson)), G = young / (2.0 * (1.0 + poisson));
+  return std::sqrt((K + 4.0 * G / 3.0) / density);
+}
 
 Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   Scene s;
@@ -77,30 +108,38 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   if (auto n = top.optional_object("numerics")) {
     s.reorder_every = static_cast<int>(n->integer("reorder_every", 0, 100000, 20));
     s.max_density_variation = n->number("max_density_variation", Range{0, 10, true, false}, 0.5);
+    s.kernel_gradient_correction = n->boolean("kernel_gradient_correction", false);
     n->reject_unknown();
   }
 
   auto mats = top.object("materials");
   for (const auto& name : mats.keys()) {
     auto m = mats.object(name);
-    s.materials.push_back(parse_fluid(m, name));
+    const std::string model = m.choice("model", {"tait_fluid", "drucker_prager", "linear_elastic"});
+    if (model == "tait_fluid") s.materials.push_back(parse_fluid(m, name));
+    else s.soils.push_back(parse_soil(m, name));
   }
-  if (s.materials.empty()) mats.fail("", "must define at least one material");
+  if (s.materials.empty() && s.soils.empty()) mats.fail("", "must define at least one material");
   mats.reject_unknown();
 
   for (auto& b : top.array_of_objects("bodies")) {
     BodySpec body;
     body.material = b.text("material");
-    bool known = false;
-    for (const auto& m : s.materials) known = known || m.name == body.material;
-    if (!known) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
+    bool is_fluid = false, is_soil = false;
+    for (const auto& m : s.materials) is_fluid = is_fluid || m.name == body.material;
+    for (const auto& m : s.soils) is_soil = is_soil || m.name == body.material;
+    if (!is_fluid && !is_soil) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
     b.choice("shape", {"box"});
     body.lo = b.vector("min", d);
     body.hi = b.vector("max", d);
     for (int a = 0; a < d; ++a)
       if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
-    body.initial = b.choice("initial", {"rest", "hydrostatic"}, "rest");
+    body.initial = is_fluid ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
+                            : b.choice("initial", {"rest", "geostatic"}, "rest");
+    if (is_soil && b.has("k0")) body.k0 = b.number("k0", Range::open(0, 10));
     body.velocity = b.vector("velocity", d, {0, 0, 0});
+    body.fixed = b.boolean("fixed", false);
+    if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
     b.reject_unknown();
     s.bodies.push_back(body);
   }
@@ -110,6 +149,8 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     s.walls.slip = w->choice("slip", {"no_slip", "free_slip"}, "no_slip");
     s.walls.layers = static_cast<int>(w->integer("layers", 1, 10, 0));
     s.walls.repulsive_strength = w->number("repulsive_strength", Range::non_negative(), 0.0);
+    if (!w->has("containers") && !w->has("blocks")) w->fail("containers", "is missing: walls need 'containers' or 'blocks'");
+    if (w->has("containers"))
     for (auto& c : w->array_of_objects("containers")) {
       ContainerSpec cs;
       cs.lo = c.vector("min", d);
@@ -120,6 +161,16 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
       c.reject_unknown();
       s.walls.containers.push_back(cs);
     }
+    if (w->has("blocks"))
+      for (auto& c : w->array_of_objects("blocks")) {
+        ContainerSpec cs;
+        cs.lo = c.vector("min", d);
+        cs.hi = c.vector("max", d);
+        for (int a = 0; a < d; ++a)
+          if (!(cs.hi[a] > cs.lo[a])) c.fail("max", "must be greater than min on every axis");
+        c.reject_unknown();
+        s.walls.blocks.push_back(cs);
+      }
     w->reject_unknown();
   }
   top.reject_unknown();
@@ -158,7 +209,21 @@ void validate_scene(const Scene& s) {
              std::string("its wall layers (") + std::to_string(wall_thick) + " m thick) extend outside the domain along " +
                  axes[a]);
     }
+  for (std::size_t c = 0; c < s.walls.blocks.size(); ++c)
+    for (int a = 0; a < s.dim; ++a)
+      if (s.walls.blocks[c].lo[a] < s.domain.lo[a] || s.walls.blocks[c].hi[a] > s.domain.hi[a])
+        fail("walls.blocks[" + std::to_string(c) + "]", std::string("extends outside the domain along ") + axes[a]);
   if (s.gravity_ramp > s.t_end) fail("time.gravity_ramp", "must not exceed time.end");
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    if (s.bodies[b].initial == "geostatic")
+      for (int a = 0; a < s.dim - 1; ++a)
+        if (s.gravity[a] != 0 || s.gravity[s.dim - 1] > 0)
+          fail("bodies[" + std::to_string(b) + "].initial",
+               std::string("\"geostatic\" needs gravity pointing along -") + (s.dim == 2 ? "y" : "z"));
+  if (s.has_fluid() && s.has_soil() && s.has_walls())
+    fail("materials", "fluid and soil in one scene with walls is not supported yet (two-phase coupling is a later module)");
+  if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")
+    fail("walls.type", "soil needs dummy walls (they carry the soil's stress); repulsive walls are for fluids only");
 }
 
 Scene load_scene(const std::filesystem::path& path) {

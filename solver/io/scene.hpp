@@ -24,11 +24,35 @@ struct FluidMaterial {
   double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
 };
 
+// Elasto-plastic soil (Drucker-Prager, Bui et al. 2008). Angles in degrees as written in the
+// scene; the stress is integrated with the Jaumann rate and its pressure comes from the
+// constitutive model (no equation of state).
+struct SoilMaterial {
+  std::string name;
+  std::string model = "drucker_prager";  // drucker_prager | linear_elastic (no yield)
+  double density = 0;                 // [kg/m^3]
+  double young = 0;                   // Young's modulus E [Pa]
+  double poisson = 0;                 // Poisson ratio nu, in (-1, 0.5)
+  double cohesion = 0;                // Mohr-Coulomb c [Pa]
+  double friction_angle = 0;          // Mohr-Coulomb phi [deg], in [0, 90)
+  double dilatancy_angle = 0;         // psi [deg], in [0, phi]
+  double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
+  double artificial_viscosity_beta = 0.0;
+  double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
+  double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
+  // P-wave speed sqrt((K + 4G/3)/rho): the time step's acoustic limit
+  double wave_speed() const;
+};
+
 struct BodySpec {
   std::string material;
   std::array<double, 3> lo{}, hi{};
-  std::string initial = "rest";       // rest (uniform rho0) | hydrostatic (Tait hydrostatic state)
+  std::string initial = "rest";       // rest (uniform rho0) | hydrostatic (fluid: Tait hydrostatic state)
+                                      // | geostatic (soil: sigma_v = rho g depth, sigma_h = K0 sigma_v)
+  double k0 = -1;                     // geostatic K0; < 0: nu/(1 - nu) (elastic, laterally confined)
   std::array<double, 3> velocity{};
+  bool fixed = false;                 // held in place (velocity zero) but otherwise part of the material,
+                                      // e.g. the clamped root of a plate (Gray, Monaghan & Swift 2001)
 };
 
 struct ContainerSpec {
@@ -42,6 +66,7 @@ struct WallSpec {
   int layers = 0;                     // 0: enough layers to cover the kernel support
   double repulsive_strength = 0;      // D [m^2/s^2]; 0: 0.05 c0^2 (i.e. ~5 g H for c0 = 10 sqrt(gH))
   std::vector<ContainerSpec> containers;
+  std::vector<ContainerSpec> blocks;  // solid boxes of wall particles (e.g. a clamp); `open` unused
 };
 
 struct Scene {
@@ -61,10 +86,14 @@ struct Scene {
   double output_interval = 0;         // 0: first and last state only
   int reorder_every = 20;             // steps between sorting particles in memory by cell
   double max_density_variation = 0.5; // |rho/rho0 - 1| beyond this is a blow-up
-  std::vector<FluidMaterial> materials;
+  bool kernel_gradient_correction = false;  // soil velocity gradient corrected (Bonet & Lok 1999)
+  std::vector<FluidMaterial> materials;   // fluids (Kind::Fluid particles index this list)
+  std::vector<SoilMaterial> soils;       // soils (Kind::Soil particles index this list)
+  bool has_fluid() const { return !materials.empty(); }
+  bool has_soil() const { return !soils.empty(); }
   std::vector<BodySpec> bodies;
   WallSpec walls;
-  bool has_walls() const { return !walls.containers.empty(); }
+  bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty(); }
 
   double h() const { return h_over_dx * dx; }
   double support() const { return kernel_support_factor(kernel) * h(); }

@@ -12,14 +12,29 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   validate_scene(scene_);
   P_ = build_particles(scene_);
   n_fluid_ = P_.count(Kind::Fluid);
-  if (n_fluid_ == 0) throw InputError(scene_.file + ": field 'bodies': the scene creates no fluid particles (bodies smaller than dx?)");
-  fluid_ = std::make_unique<FluidForces>(scene_);
-  if (P_.count(Kind::DummyWall) > 0) {
-    dummy_walls_ = std::make_unique<DummyWalls>(scene_, *fluid_);
-    dummy_walls_->allocate(P_);
+  n_soil_ = P_.count(Kind::Soil);
+  if (n_fluid_ + n_soil_ == 0)
+    throw InputError(scene_.file + ": field 'bodies': the scene creates no particles (bodies smaller than dx?)");
+  const bool dummy = P_.count(Kind::DummyWall) > 0;
+  if (scene_.has_fluid()) {
+    fluid_ = std::make_unique<FluidForces>(scene_);
+    if (dummy) {
+      dummy_walls_ = std::make_unique<DummyWalls>(scene_, *fluid_);
+      dummy_walls_->allocate(P_);
+    }
+    for (const auto& m : scene_.materials) bounds_.fluid.rho0.push_back(m.density);
+    bounds_.fluid.max_speed = fluid_->max_sound_speed();
   }
-  for (const auto& m : scene_.materials) rho0_.push_back(m.density);
-  bounds_.max_speed = fluid_->max_sound_speed();
+  if (scene_.has_soil()) {
+    soil_ = std::make_unique<SoilForces>(scene_);
+    soil_->allocate(P_);
+    if (dummy) {
+      soil_walls_ = std::make_unique<SoilWalls>(scene_);
+      soil_walls_->allocate(P_);
+    }
+    for (const auto& m : scene_.soils) bounds_.soil.rho0.push_back(m.density);
+    bounds_.soil.max_speed = soil_->max_wave_speed();
+  }
   bounds_.max_density_variation = scene_.max_density_variation;
   limits_ = {scene_.cfl, scene_.force_factor, scene_.viscous_factor};
   const long outside = cells_.build(P_, scene_.domain, scene_.support());
@@ -29,7 +44,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
                      std::to_string(P_.z[outside]) + ") starts outside the domain");
   neighbour_search();
   forces();
-  state_ = check_state(P_, scene_.domain, rho0_, bounds_, step_, t_);
+  state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();
 }
 
@@ -58,18 +73,24 @@ void Simulation::neighbour_search() {
 
 void Simulation::forces() {
   const auto g = gravity_at(t_);
-  fluid_->update_pressure(P_);
-  if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
-  fluid_->momentum(P_, cells_, g);
+  if (fluid_) {
+    fluid_->update_pressure(P_);
+    if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
+    fluid_->momentum(P_, cells_, g);
+  }
+  if (soil_) {
+    if (soil_walls_) soil_walls_->update(P_, cells_, g);
+    soil_->momentum(P_, cells_, g);
+  }
 }
 
 void Simulation::choose_time_step() {
   TimeStepInput in;
   in.h = scene_.h();
-  in.c_max = fluid_->max_sound_speed();
+  in.c_max = std::max(fluid_ ? fluid_->max_sound_speed() : 0.0, soil_ ? soil_->max_wave_speed() : 0.0);
   in.v_max = state_.v_max;
   in.a_max = state_.a_max;
-  in.nu_max = fluid_->max_kinematic_viscosity();
+  in.nu_max = fluid_ ? fluid_->max_kinematic_viscosity() : 0.0;
   dt_ = stable_time_step(in, limits_);
   if (t_ + dt_ > scene_.t_end) dt_ = std::max(scene_.t_end - t_, 1e-300);
 }
@@ -79,9 +100,10 @@ void Simulation::step() {
   const double half = 0.5 * dt_, dt = dt_;
   const auto& dom = scene_.domain;
   auto& P = P_;
+  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Fluid) continue;
+    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
     P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
     P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
     double* q[3] = {&P.x[i], &P.y[i], &P.z[i]};
@@ -94,17 +116,19 @@ void Simulation::step() {
   t_ += dt;
   ++step_;
   neighbour_search();
-  fluid_->continuity(P_, cells_);
+  if (fluid_) fluid_->continuity(P_, cells_);
+  if (soil_) soil_->update_stress(P_, cells_, dt, step_, t_);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    if (P.kind[i] == Kind::Fluid) P.rho[i] += dt * P.drho[i];
+    if (is_moving(P.kind[i])) P.rho[i] += dt * P.drho[i];
   forces();
+  const double* held = P.has_field("fixed") ? P.field("fixed").data() : nullptr;  // re-read: permuted
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Fluid) continue;
+    if (!is_moving(P.kind[i]) || (held && held[i] > 0)) continue;
     P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
   }
-  state_ = check_state(P_, scene_.domain, rho0_, bounds_, step_, t_);
+  state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();
 }
 

@@ -1,20 +1,23 @@
-// The time loop. Builds only the modules the scene declares (fluid forces always for fluid
-// materials; dummy-wall extrapolation only if the scene has dummy walls) and advances them with a
-// kick-drift-kick (velocity Verlet) scheme, one force evaluation per step:
-//   v^{n+1/2} = v^n + dt/2 a^n,   rho^{n+1/2} = rho^n + dt/2 Drho^n,   x^{n+1} = x^n + dt v^{n+1/2},
-//   a^{n+1}, Drho^{n+1} from (x^{n+1}, v^{n+1/2}, rho^{n+1/2}),
-//   v^{n+1} = v^{n+1/2} + dt/2 a^{n+1},   rho^{n+1} = rho^{n+1/2} + dt/2 Drho^{n+1}.
+// The time loop. Builds only the modules the scene declares (fluid forces for fluid materials,
+// soil stress and forces for soil materials, each phase's wall extrapolation only if the scene
+// has dummy walls) and advances them with a kick-drift-kick scheme:
+//   v^{n+1/2} = v^n + dt/2 a^n,   x^{n+1} = x^n + dt v^{n+1/2},
+//   Drho (and, for soil, the strain and spin increments) from (x^{n+1}, v^{n+1/2}):
+//   rho^{n+1} = rho^n + dt Drho,  sigma^{n+1} = return_map(sigma^n + Jaumann increment),
+//   a^{n+1} from (x^{n+1}, v^{n+1/2}, rho^{n+1}, sigma^{n+1}),   v^{n+1} = v^{n+1/2} + dt/2 a^{n+1}.
 #pragma once
 #include <functional>
 #include <memory>
 
 #include "boundary/dummy_wall.hpp"
+#include "boundary/soil_wall.hpp"
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "core/time_step.hpp"
 #include "fluid/fluid_forces.hpp"
 #include "io/scene.hpp"
 #include "sim/stability.hpp"
+#include "soil/soil_forces.hpp"
 
 namespace geosph {
 
@@ -34,6 +37,9 @@ class Simulation {
   long steps() const { return step_; }
   double dt() const { return dt_; }
   std::size_t fluid_count() const { return n_fluid_; }
+  std::size_t soil_count() const { return n_soil_; }
+  // material (moving) particles: fluid + soil; walls excluded
+  std::size_t moving_count() const { return n_fluid_ + n_soil_; }
   // Gravity at time t, ramped smoothly from zero over scene.gravity_ramp (Adami et al. 2012, eq. 33).
   std::array<double, 3> gravity_at(double t) const;
 
@@ -47,11 +53,12 @@ class Simulation {
   CellList cells_;
   std::unique_ptr<FluidForces> fluid_;
   std::unique_ptr<DummyWalls> dummy_walls_;
-  std::vector<double> rho0_;
+  std::unique_ptr<SoilForces> soil_;
+  std::unique_ptr<SoilWalls> soil_walls_;
   StateBounds bounds_;
   TimeStepLimits limits_;
   StateSummary state_;
-  std::size_t n_fluid_ = 0;
+  std::size_t n_fluid_ = 0, n_soil_ = 0;
   double t_ = 0, dt_ = 0;
   long step_ = 0;
 };

@@ -13,19 +13,19 @@ std::string Diagnosis::message() const {
   return s.str();
 }
 
-StateSummary check_state(const Particles& P, const Box& domain, const std::vector<double>& rho0,
-                         const StateBounds& bounds, long step, double time) {
+StateSummary check_state(const Particles& P, const Box& domain, const StateBounds& bounds, long step, double time) {
   const std::size_t n = P.size();
   double v2max = 0, a2max = 0;
   long bad = -1;
 #pragma omp parallel for reduction(max : v2max, a2max) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Fluid) continue;
+    if (!is_moving(P.kind[i])) continue;
+    const PhaseBounds& b = P.kind[i] == Kind::Fluid ? bounds.fluid : bounds.soil;
     const double v2 = P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i];
     const double a2 = P.ax[i] * P.ax[i] + P.ay[i] * P.ay[i] + P.az[i] * P.az[i];
-    const double ratio = P.rho[i] / rho0[P.material[i]];
+    const double ratio = P.rho[i] / b.rho0[P.material[i]];
     const bool ok = std::isfinite(v2) && std::isfinite(a2) && std::isfinite(P.x[i] + P.y[i] + P.z[i]) &&
-                    std::isfinite(ratio) && v2 <= bounds.max_speed * bounds.max_speed &&
+                    std::isfinite(ratio) && v2 <= b.max_speed * b.max_speed &&
                     std::abs(ratio - 1.0) <= bounds.max_density_variation && domain.contains(P.x[i], P.y[i], P.z[i]);
     if (!ok) {
 #pragma omp critical
@@ -43,12 +43,15 @@ StateSummary check_state(const Particles& P, const Box& domain, const std::vecto
     q.precision(6);
     const double v = std::sqrt(P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
     const double a = std::sqrt(P.ax[i] * P.ax[i] + P.ay[i] * P.ay[i] + P.az[i] * P.az[i]);
-    const double ratio = P.rho[i] / rho0[P.material[i]];
+    const PhaseBounds& b = P.kind[i] == Kind::Fluid ? bounds.fluid : bounds.soil;
+    const double ratio = P.rho[i] / b.rho0[P.material[i]];
     if (!std::isfinite(P.x[i] + P.y[i] + P.z[i])) q << "position is not finite";
     else if (!std::isfinite(v)) q << "velocity is not finite";
     else if (!std::isfinite(a)) q << "acceleration is not finite";
     else if (!std::isfinite(ratio)) q << "density is not finite";
-    else if (v > bounds.max_speed) q << "speed " << v << " m/s exceeds the sound speed " << bounds.max_speed << " m/s (weak compressibility lost)";
+    else if (v > b.max_speed)
+      q << "speed " << v << " m/s exceeds the " << (P.kind[i] == Kind::Fluid ? "sound" : "elastic wave") << " speed "
+        << b.max_speed << " m/s (weak compressibility lost)";
     else if (std::abs(ratio - 1.0) > bounds.max_density_variation)
       q << "density ratio rho/rho0 = " << ratio << " is outside 1 +/- " << bounds.max_density_variation;
     else q << "particle left the domain";

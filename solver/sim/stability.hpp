@@ -3,6 +3,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -23,8 +24,15 @@ struct InstabilityError : std::runtime_error {
   explicit InstabilityError(const Diagnosis& d) : std::runtime_error(d.message()), diagnosis(d) {}
 };
 
+// Limits per material kind: reference densities by material index and the wave speed (|v| above
+// it means weak compressibility / the stress wave resolution is lost).
+struct PhaseBounds {
+  std::vector<double> rho0;
+  double max_speed = 0;
+};
+
 struct StateBounds {
-  double max_speed = 0;              // |v| above this is a blow-up (the fluid's sound speed)
+  PhaseBounds fluid, soil;
   double max_density_variation = 0;  // |rho/rho0 - 1| above this is a blow-up
 };
 
@@ -34,7 +42,6 @@ struct StateSummary {
 };
 
 // Throws InstabilityError for the first offending particle.
-StateSummary check_state(const Particles& P, const Box& domain, const std::vector<double>& rho0,
-                         const StateBounds& bounds, long step, double time);
+StateSummary check_state(const Particles& P, const Box& domain, const StateBounds& bounds, long step, double time);
 
 }  // namespace geosph

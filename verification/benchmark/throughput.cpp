@@ -1,9 +1,10 @@
-// Throughput of the time loop on the 2D dam break (verification/cases/dam_break_2d/scene.json):
-// fluid particle-steps per second of wall-clock time, at ~10k, ~40k and ~160k fluid particles and
-// 1 or 2 OpenMP threads.
+// Throughput of the time loop on catalogue scenes: material particle-steps per second of
+// wall-clock time at three sizes and 1 or 2 OpenMP threads, for
+//   DamBreak2D         the 2D dam break (fluid; ~10k, ~40k, ~160k particles)
+//   GranularCollapse2D the aluminium-bar column collapse (Drucker-Prager soil; ~5k, ~20k, ~80k)
 //
-// The scene is the catalogue one with only dx changed, so that the 0.146 m x 0.292 m water column
-// holds about N particles: dx = sqrt(0.146 * 0.292 / N). Building the Simulation (particles, cell
+// Each scene is the catalogue one with only dx changed, so that its first body (the water column,
+// the soil column) holds about N particles: dx = sqrt(body area / N). Building the Simulation (particles, cell
 // list, first force evaluation) and a few warm-up steps are outside the timed region; each timed
 // iteration is one Simulation::step() (neighbour search, continuity, pressure, wall extrapolation,
 // momentum, state check, time-step choice, plus the reorder every scene.reorder_every steps).
@@ -16,13 +17,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/scene.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
 
-constexpr double kColumnWidth = 0.146, kColumnHeight = 0.292;  // the water body in scene.json [m]
 constexpr int kWarmupSteps = 5;
 
 std::filesystem::path data_dir() {
@@ -30,20 +31,22 @@ std::filesystem::path data_dir() {
   return GEOSPH_DEFAULT_DATA_DIR;
 }
 
-geosph::Scene dam_break_scene(long target_fluid_particles) {
-  geosph::Scene scene = geosph::load_scene(data_dir() / "verification" / "cases" / "dam_break_2d" / "scene.json");
-  scene.dx = std::sqrt(kColumnWidth * kColumnHeight / static_cast<double>(target_fluid_particles));
+geosph::Scene sized_scene(const std::string& case_name, long target_particles) {
+  geosph::Scene scene = geosph::load_scene(data_dir() / "verification" / "cases" / case_name / "scene.json");
+  const auto& body = scene.bodies.front();
+  const double area = (body.hi[0] - body.lo[0]) * (body.hi[1] - body.lo[1]);
+  scene.dx = std::sqrt(area / static_cast<double>(target_particles));
   geosph::validate_scene(scene);
   return scene;
 }
 
-// range(0): target fluid particle count; range(1): OpenMP threads.
-void BM_DamBreak2D(benchmark::State& state) {
+// range(0): target particle count; range(1): OpenMP threads.
+void BM_Scene(benchmark::State& state, const std::string& case_name) {
   const long target = state.range(0);
   const int threads = static_cast<int>(state.range(1));
   omp_set_num_threads(threads);
 
-  geosph::Simulation sim(dam_break_scene(target));
+  geosph::Simulation sim(sized_scene(case_name, target));
   for (int s = 0; s < kWarmupSteps; ++s) sim.step();
 
   for (auto _ : state) {
@@ -51,17 +54,17 @@ void BM_DamBreak2D(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
 
-  const double fluid = static_cast<double>(sim.fluid_count());
+  const double material = static_cast<double>(sim.moving_count());
   const double total = static_cast<double>(sim.particles().size());
-  state.counters["fluid"] = fluid;
-  state.counters["total"] = total;  // fluid + dummy wall particles
+  state.counters["material"] = material;
+  state.counters["total"] = total;  // material + wall particles
   state.counters["particle_steps_per_s"] =
-      benchmark::Counter(fluid * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+      benchmark::Counter(material * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   // Wall-clock time per fluid particle-step (printed with an SI prefix, e.g. 1.1us), to compare
   // sizes: constant if the cost is O(N). The wall particles (~27% extra at 10k, ~7% at 160k) are
   // not counted as particle-steps but their work (wall extrapolation, neighbour search) is timed.
   state.counters["time_per_particle_step"] =
-      benchmark::Counter(fluid * static_cast<double>(state.iterations()),
+      benchmark::Counter(material * static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
@@ -69,9 +72,14 @@ void BM_DamBreak2D(benchmark::State& state) {
 // particle-steps per case, roughly the same work at every size).
 void register_all() {
   struct Size { long n; long steps; };
-  for (const Size sz : {Size{10'000, 800}, Size{40'000, 200}, Size{160'000, 50}})
+  struct Case { const char* name; const char* scene; std::vector<Size> sizes; };
+  const std::vector<Case> cases = {
+      {"DamBreak2D/step", "dam_break_2d", {{10'000, 800}, {40'000, 200}, {160'000, 50}}},
+      {"GranularCollapse2D/step", "granular_collapse_bui", {{5'000, 800}, {20'000, 200}, {80'000, 50}}}};
+  for (const auto& c : cases)
+  for (const Size sz : c.sizes)
     for (const long threads : {1L, 2L})
-      benchmark::RegisterBenchmark("DamBreak2D/step", BM_DamBreak2D)
+      benchmark::RegisterBenchmark(c.name, BM_Scene, std::string(c.scene))
           ->Args({sz.n, threads})
           ->ArgNames({"N", "threads"})
           ->Iterations(sz.steps)

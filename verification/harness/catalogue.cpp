@@ -1,6 +1,7 @@
 #include "harness/catalogue.hpp"
 
 #include "cases/dam_break_2d/dam_break_2d.hpp"
+#include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
 
@@ -11,6 +12,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"hydrostatic_tank", run_hydrostatic_tank},
       {"poiseuille_flow", run_poiseuille_flow},
       {"dam_break_2d", run_dam_break_2d},
+      {"granular_collapse_bui", run_granular_collapse_bui},
   };
   return cases;
 }

@@ -21,6 +21,7 @@ nlohmann::json Record::to_json() const {
   j["title"] = title;
   j["level"] = level;
   if (!variant.empty()) j["variant"] = variant;
+  if (!scored) j["scored"] = false;
   j["reference"] = reference;
   j["resolution"] = {{"dx", dx}, {"particles", particles}, {"wall_particles", wall_particles}, {"dimension", dimension}};
   j["metrics"] = nlohmann::json::array();

@@ -32,6 +32,9 @@ struct Record {
   double wall_s = 0, particle_steps_per_s = 0;
   int threads = 1;
   bool stable = true;
+  // false for a study run whose outcome is reported but not judged (e.g. a hard case with its
+  // stabilisation switched off, for the stability table): it neither passes nor fails the catalogue
+  bool scored = true;
   nlohmann::json failure;  // {step, time, message} when unstable
   nlohmann::json options = nlohmann::json::object();
   nlohmann::json extra = nlohmann::json::object();  // merged into the record (e.g. expected_order)

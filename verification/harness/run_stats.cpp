@@ -14,17 +14,29 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
   const Scene& s = sim.scene();
   rec.dx = s.dx;
   rec.dimension = s.dim;
-  rec.particles = static_cast<long>(sim.fluid_count());
-  rec.wall_particles = static_cast<long>(sim.particles().size() - sim.fluid_count());
+  rec.particles = static_cast<long>(sim.moving_count());
+  rec.wall_particles = static_cast<long>(sim.particles().size() - sim.moving_count());
   rec.threads = omp_get_max_threads();
-  const auto& m = s.materials.front();
   rec.options["kernel"] = kernel_name(s.kernel);
   rec.options["h_over_dx"] = s.h_over_dx;
   rec.options["boundary"] = s.has_walls() ? s.walls.type : "none";
   rec.options["wall_slip"] = s.walls.slip;
-  rec.options["artificial_viscosity"] = m.artificial_viscosity;
-  rec.options["density_diffusion"] = m.density_diffusion;
-  rec.options["sound_speed"] = m.sound_speed;
+  if (s.has_fluid()) {
+    const auto& m = s.materials.front();
+    rec.options["artificial_viscosity"] = m.artificial_viscosity;
+    rec.options["density_diffusion"] = m.density_diffusion;
+    rec.options["sound_speed"] = m.sound_speed;
+  }
+  if (s.has_soil()) {
+    const auto& m = s.soils.front();
+    rec.options["soil_model"] = m.model;
+    rec.options["artificial_viscosity"] = m.artificial_viscosity;
+    rec.options["artificial_stress"] = m.artificial_stress;
+    if (m.artificial_stress > 0) rec.options["artificial_stress_exponent"] = m.artificial_stress_exponent;
+    rec.options["friction_angle_deg"] = m.friction_angle;
+    rec.options["kernel_gradient_correction"] = s.kernel_gradient_correction;
+    rec.options["dilatancy_angle_deg"] = m.dilatancy_angle;
+  }
   const long steps0 = sim.steps();
   Progress bar(s.t_end, progress);
   const auto t0 = std::chrono::steady_clock::now();
@@ -49,15 +61,21 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
 }
 
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points) {
+  return field_snapshot(sim, "pressure", "Pa", max_points);
+}
+
+nlohmann::json field_snapshot(const Simulation& sim, const std::string& field, const std::string& units,
+                              std::size_t max_points) {
   const auto& P = sim.particles();
-  const std::size_t stride = std::max<std::size_t>(1, sim.fluid_count() / max_points + 1);
+  const std::size_t stride = std::max<std::size_t>(1, sim.moving_count() / max_points + 1);
   nlohmann::json x = nlohmann::json::array(), y = nlohmann::json::array(), v = nlohmann::json::array();
   std::size_t k = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] != Kind::Fluid || (k++ % stride) != 0) continue;
-    x.push_back(P.x[i]); y.push_back(P.y[i]); v.push_back(P.p[i]);
+    if (!is_moving(P.kind[i]) || (k++ % stride) != 0) continue;
+    x.push_back(P.x[i]); y.push_back(P.y[i]);
+    v.push_back(field == "pressure" ? P.p[i] : P.extra_fields().at(field)[i]);
   }
-  return {{"x", x}, {"y", y}, {"values", v}, {"field", "pressure"}, {"units", "Pa"}};
+  return {{"x", x}, {"y", y}, {"values", v}, {"field", field}, {"units", units}};
 }
 
 }  // namespace geosph::verify

@@ -15,5 +15,8 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
 
 // Final particle snapshot (fluid only, at most max_points) coloured by pressure.
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points = 6000);
+// Snapshot of any moving-particle field ("pressure" or an optional field such as "plastic_strain").
+nlohmann::json field_snapshot(const Simulation& sim, const std::string& field, const std::string& units,
+                              std::size_t max_points = 6000);
 
 }  // namespace geosph::verify

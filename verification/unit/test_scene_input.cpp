@@ -149,3 +149,46 @@ TEST(SceneInput, CommandLineRejectsBadSceneWithoutWritingOutput) {
   msg << std::ifstream(err).rdbuf();
   EXPECT_NE(msg.str().find("scene.json: field 'dx': must be > 0, got -1"), std::string::npos) << msg.str();
 }
+
+// Soil materials: moduli, Poisson ratio, friction and dilatancy angles are range-checked and the
+// message names the material and the field.
+namespace {
+json soil_scene() {
+  return json::parse(R"({
+    "name": "column", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-0.1, -0.1], "max": [0.5, 0.5]},
+    "gravity": [0, -9.81],
+    "time": {"end": 0.01},
+    "materials": {"sand": {"model": "drucker_prager", "density": 2650, "young_modulus": 0.84e6,
+                           "poisson_ratio": 0.3, "friction_angle": 19.8}},
+    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [0.2, 0.1], "initial": "geostatic"}],
+    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.35, 0.3], "open": ["top"]}]}
+  })");
+}
+}  // namespace
+
+TEST(SceneInput, SoilMaterialRanges) {
+  EXPECT_NO_THROW(parse_scene(soil_scene(), "bad.json"));
+  auto j = soil_scene();
+  j["materials"]["sand"]["young_modulus"] = 0;
+  expect_error(j, "materials.sand.young_modulus", "> 0");
+  j = soil_scene();
+  j["materials"]["sand"]["young_modulus"] = -5e6;
+  expect_error(j, "materials.sand.young_modulus", "got -5");
+  j = soil_scene();
+  j["materials"]["sand"]["poisson_ratio"] = 0.5;
+  expect_error(j, "materials.sand.poisson_ratio", "(-1, 0.5)");
+  j["materials"]["sand"]["poisson_ratio"] = -1.0;
+  expect_error(j, "materials.sand.poisson_ratio", "(-1, 0.5)");
+  j = soil_scene();
+  j["materials"]["sand"]["friction_angle"] = 90;
+  expect_error(j, "materials.sand.friction_angle", "[0, 90)");
+  j["materials"]["sand"]["friction_angle"] = -1;
+  expect_error(j, "materials.sand.friction_angle", "[0, 90)");
+  j = soil_scene();
+  j["materials"]["sand"]["dilatancy_angle"] = 25;
+  expect_error(j, "materials.sand.dilatancy_angle", "must not exceed friction_angle");
+  j = soil_scene();
+  j["walls"]["type"] = "repulsive";
+  expect_error(j, "walls.type", "soil needs dummy walls");
+}

@@ -1,0 +1,69 @@
+#include "boundary/soil_wall.hpp"
+
+#include <cmath>
+
+#include "soil/soil_forces.hpp"
+
+namespace geosph {
+
+SoilWalls::SoilWalls(const Scene& scene) : scene_(scene), no_slip_(scene.walls.slip == "no_slip") {}
+
+void SoilWalls::allocate(Particles& P) const {
+  if (!no_slip_) return;
+  P.field("wall_vx"); P.field("wall_vy"); P.field("wall_vz");
+}
+
+void SoilWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  std::visit(
+      [&](const auto& kernel) {
+        const std::size_t n = P.size();
+        double* wv[3] = {nullptr, nullptr, nullptr};
+        if (no_slip_) { wv[0] = P.field("wall_vx").data(); wv[1] = P.field("wall_vy").data(); wv[2] = P.field("wall_vz").data(); }
+        double* s[6] = {P.field(SoilFields::xx).data(), P.field(SoilFields::yy).data(), P.field(SoilFields::zz).data(),
+                        P.field(SoilFields::xy).data(), P.dim == 3 ? P.field(SoilFields::xz).data() : nullptr,
+                        P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr};
+        const int ncomp = P.dim == 3 ? 6 : 4;
+        const double volume = std::pow(scene_.dx, scene_.dim);
+        const double shear_sign = no_slip_ ? 1.0 : -1.0;
+        const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
+#pragma omp parallel for schedule(dynamic, 256)
+        for (std::size_t w = 0; w < n; ++w) {
+          if (P.kind[w] != Kind::DummyWall) continue;
+          double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, wmax = -1;
+          std::uint16_t mat = 0;
+          cells.for_each_neighbor(P, w, [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
+            if (P.kind[k] != Kind::Soil) return;
+            const double W = kernel.W(std::sqrt(r2));
+            sw += W;
+            for (int c = 0; c < ncomp; ++c) ss[c] += s[c][k] * W;
+            const double rw = P.rho[k] * W;
+            sr[0] += rw * dx; sr[1] += rw * dy; sr[2] += rw * dz;
+            sv[0] += P.vx[k] * W; sv[1] += P.vy[k] * W; sv[2] += P.vz[k] * W;
+            if (W > wmax) { wmax = W; mat = P.material[k]; }
+          });
+          const double rho0 = scene_.soils[mat].density;
+          P.rho[w] = rho0;
+          P.m[w] = rho0 * volume;
+          if (sw <= 0) {
+            for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
+            P.p[w] = 0;
+            if (no_slip_) for (int a = 0; a < 3; ++a) wv[a][w] = 0;
+            continue;
+          }
+          const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
+          for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
+          for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
+          P.p[w] = -(s[0][w] + s[1][w] + s[2][w]) / 3.0;
+          if (block && block[w] > 0) {  // clamp: the embedded material does not move
+            if (no_slip_) { wv[0][w] = P.vx[w]; wv[1][w] = P.vy[w]; wv[2][w] = P.vz[w]; }
+          } else if (no_slip_) {
+            wv[0][w] = 2.0 * P.vx[w] - sv[0] / sw;
+            wv[1][w] = 2.0 * P.vy[w] - sv[1] / sw;
+            wv[2][w] = 2.0 * P.vz[w] - sv[2] / sw;
+          }
+        }
+      },
+      make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+}  // namespace geosph

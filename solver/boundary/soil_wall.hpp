@@ -1,0 +1,33 @@
+// Dummy wall particles for soil that carry the soil's stress, so that a soil particle at the wall
+// has a full kernel support (no particle deficiency). The fluid dummy-particle treatment of
+// Adami, Hu & Adams (2012, J. Comput. Phys. 231, eq. 27) is applied to the stress tensor, tension
+// positive, with its hydrostatic extrapolation acting on the mean stress:
+//   sigma_w = ( sum_s sigma_s W_ws - I (g - a_w) . sum_s rho_s r_ws W_ws ) / sum_s W_ws,  r_ws = x_w - x_s
+// No slip: the shear components are copied and the velocity is v_w = 2 v_wall - v~ (Adami eq. 23),
+// so the wall shears the soil. Free slip: the shear components are mirrored (sigma_w,ab = -sigma~_ab,
+// a != b), which gives zero shear traction on the axis-aligned container walls, and the wall takes
+// no part in the velocity gradient. Particles of wall blocks (walls.blocks, e.g. a clamp) keep their
+// own velocity (zero): the material embedded in a block is held, as the clamped particles of Gray,
+// Monaghan & Swift (2001). Wall density is the soil's reference density and its mass
+// rho0 dx^dim, as for the fluid walls.
+#pragma once
+#include <array>
+
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+#include "io/scene.hpp"
+
+namespace geosph {
+
+class SoilWalls {
+ public:
+  explicit SoilWalls(const Scene& scene);
+  void allocate(Particles& P) const;
+  void update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+
+ private:
+  const Scene& scene_;
+  bool no_slip_;
+};
+
+}  // namespace geosph

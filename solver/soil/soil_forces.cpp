@@ -1,0 +1,245 @@
+#include "soil/soil_forces.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <numbers>
+
+#include "sim/stability.hpp"
+
+namespace geosph {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Stress fields as raw pointers; xz and yz exist only in 3D.
+struct StressView {
+  double *xx, *yy, *zz, *xy, *xz, *yz;
+  explicit StressView(Particles& P)
+      : xx(P.field(SoilFields::xx).data()), yy(P.field(SoilFields::yy).data()), zz(P.field(SoilFields::zz).data()),
+        xy(P.field(SoilFields::xy).data()), xz(P.dim == 3 ? P.field(SoilFields::xz).data() : nullptr),
+        yz(P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr) {}
+  Eigen::Matrix3d get(std::size_t i) const {
+    Eigen::Matrix3d s;
+    const double sxz = xz ? xz[i] : 0.0, syz = yz ? yz[i] : 0.0;
+    s << xx[i], xy[i], sxz, xy[i], yy[i], syz, sxz, syz, zz[i];
+    return s;
+  }
+  void set(std::size_t i, const Eigen::Matrix3d& s) const {
+    xx[i] = s(0, 0); yy[i] = s(1, 1); zz[i] = s(2, 2); xy[i] = s(0, 1);
+    if (xz) { xz[i] = s(0, 2); yz[i] = s(1, 2); }
+  }
+};
+
+}  // namespace
+
+SoilForces::SoilForces(const Scene& scene) : scene_(scene), free_slip_walls_(scene.walls.slip == "free_slip") {
+  for (const auto& m : scene.soils) {
+    models_.emplace_back(soil::DruckerPragerParams{m.young, m.poisson, m.cohesion, m.friction_angle * kDeg,
+                                                   m.dilatancy_angle * kDeg});
+    elastic_only_.push_back(m.model == "linear_elastic");
+  }
+}
+
+void SoilForces::allocate(Particles& P) const {
+  for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::plastic_strain})
+    P.field(f);
+  if (P.dim == 3) { P.field(SoilFields::xz); P.field(SoilFields::yz); }
+}
+
+double SoilForces::max_wave_speed() const {
+  double c = 0;
+  for (const auto& m : scene_.soils) c = std::max(c, m.wave_speed());
+  return c;
+}
+
+void SoilForces::update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const {
+  std::visit([&](const auto& k) { update_stress_with(k, P, cells, dt, step, time); },
+             make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+void SoilForces::momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  std::visit([&](const auto& k) { momentum_with(k, P, cells, g); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+template <class K>
+void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellList& cells, double dt, long step,
+                                    double time) const {
+  const std::size_t n = P.size();
+  const StressView sv(P);
+  double* eps_p = P.field(SoilFields::plastic_strain).data();
+  const bool wall_velocity = P.has_field("wall_vx");
+  const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
+  const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
+  const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
+  long bad = -1;
+  const bool correct = scene_.kernel_gradient_correction;
+  const int dim = scene_.dim;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    double drho = 0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj != Kind::Soil && kj != Kind::DummyWall) return;
+      const double fw = kernel.gradW_over_r(std::sqrt(r2));
+      const double grad[3] = {fw * dx, fw * dy, fw * dz};
+      const double Vj = P.m[j] / P.rho[j];
+      // continuity with the wall's own (prescribed) velocity
+      drho += P.m[j] * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
+      double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
+      if (kj == Kind::DummyWall) {
+        if (free_slip_walls_) return;  // free slip: the wall does not shear the soil
+        if (wvx) { vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j]; }  // no slip: 2 v_wall - v_soil
+      }
+      const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
+      const double rji[3] = {-dx, -dy, -dz};  // x_j - x_i
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          L[a][b] += Vj * dv[a] * grad[b];
+          B[a][b] += Vj * rji[a] * grad[b];
+        }
+    });
+    if (correct) {
+      // L <- L B^-1 on the in-plane block (B is the identity for a full, regular support)
+      Eigen::Matrix3d Bm = Eigen::Matrix3d::Identity(), Lm = Eigen::Matrix3d::Zero();
+      for (int a = 0; a < dim; ++a)
+        for (int b = 0; b < dim; ++b) { Bm(a, b) = B[a][b]; Lm(a, b) = L[a][b]; }
+      bool invertible = false;
+      Eigen::Matrix3d Binv;
+      double det = 0;
+      Bm.computeInverseAndDetWithCheck(Binv, det, invertible, 1e-3);
+      if (invertible) {
+        const Eigen::Matrix3d Lc = Lm * Binv;
+        for (int a = 0; a < dim; ++a)
+          for (int b = 0; b < dim; ++b) L[a][b] = Lc(a, b);
+      }
+    }
+    P.drho[i] = drho;
+    Eigen::Matrix3d de, dw;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        de(a, b) = 0.5 * dt * (L[a][b] + L[b][a]);
+        dw(a, b) = 0.5 * dt * (L[a][b] - L[b][a]);
+      }
+    const auto& model = models_[P.material[i]];
+    soil::DruckerPrager::Result r;
+    if (elastic_only_[P.material[i]]) {
+      r.stress = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + model.elastic_increment(de);
+      r.equivalent_plastic_strain_increment = 0;
+    } else {
+      r = model.update(sv.get(i), de, dw);
+    }
+    if (!r.stress.allFinite()) {
+#pragma omp critical
+      if (bad < 0 || static_cast<long>(i) < bad) bad = static_cast<long>(i);
+      continue;
+    }
+    sv.set(i, r.stress);
+    eps_p[i] += r.equivalent_plastic_strain_increment;
+    P.p[i] = -r.stress.trace() / 3.0;
+  }
+  if (bad >= 0) {
+    const auto i = static_cast<std::size_t>(bad);
+    Diagnosis d;
+    d.step = step; d.time = time; d.particle_id = P.id[i];
+    d.x = P.x[i]; d.y = P.y[i]; d.z = P.z[i];
+    d.quantity = "soil stress is not finite after the Jaumann update and return mapping";
+    throw InstabilityError(d);
+  }
+}
+
+void SoilForces::prepare_pair_terms(Particles& P) const {
+  const std::size_t n = P.size();
+  S_.resize(n);
+  R_.resize(n);
+  const StressView sv(P);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Soil && P.kind[i] != Kind::DummyWall) continue;
+    const Eigen::Matrix3d s = sv.get(i);
+    const double inv_r2 = 1.0 / (P.rho[i] * P.rho[i]);
+    S_[i] = {s(0, 0) * inv_r2, s(1, 1) * inv_r2, s(2, 2) * inv_r2, s(0, 1) * inv_r2, s(0, 2) * inv_r2, s(1, 2) * inv_r2};
+    // Artificial stress (Gray, Monaghan & Swift 2001, eqs. 3.2-3.5): in the principal frame,
+    // R'_a = -eps sigma'_a / rho^2 where sigma'_a > 0 (tension), else 0; rotated back.
+    const std::size_t mat = P.kind[i] == Kind::Soil ? P.material[i] : 0;
+    const double eps = scene_.soils[mat].artificial_stress;
+    R_[i] = {0, 0, 0, 0, 0, 0};
+    if (eps <= 0) continue;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+    es.computeDirect(s);
+    Eigen::Vector3d rp = Eigen::Vector3d::Zero();
+    bool any = false;
+    for (int a = 0; a < 3; ++a)
+      if (es.eigenvalues()(a) > 0) { rp(a) = -eps * es.eigenvalues()(a) * inv_r2; any = true; }
+    if (!any) continue;
+    const Eigen::Matrix3d R = es.eigenvectors() * rp.asDiagonal() * es.eigenvectors().transpose();
+    R_[i] = {R(0, 0), R(1, 1), R(2, 2), R(0, 1), R(0, 2), R(1, 2)};
+  }
+}
+
+template <class K>
+void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& cells,
+                               const std::array<double, 3>& g) const {
+  prepare_pair_terms(P);
+  const std::size_t n = P.size();
+  const double h = scene_.h(), eta2 = 0.01 * h * h;
+  const double w_dx = kernel.W(scene_.dx);
+  const bool wall_velocity = P.has_field("wall_vx");
+  const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
+  const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
+  const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const SoilMaterial& mi = scene_.soils[P.material[i]];
+    const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    const double alpha_c = mi.artificial_viscosity * mi.wave_speed(), beta = mi.artificial_viscosity_beta;
+    const double n_as = mi.artificial_stress_exponent;
+    const bool n_is_4 = n_as == 4.0;
+    const bool use_as = mi.artificial_stress > 0;
+    const auto& Si = S_[i];
+    const auto& Ri = R_[i];
+    double ax = 0, ay = 0, az = 0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj != Kind::Soil && kj != Kind::DummyWall) return;
+      const double r = std::sqrt(r2);
+      const double fw = kernel.gradW_over_r(r);
+      const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
+      const double mj = P.m[j];
+      const auto& Sj = S_[j];
+      double T[6];
+      for (int c = 0; c < 6; ++c) T[c] = Si[c] + Sj[c];
+      if (use_as) {
+        const double ratio = kernel.W(r) / w_dx;
+        const double f = n_is_4 ? (ratio * ratio) * (ratio * ratio) : std::pow(ratio, n_as);
+        const auto& Rj = R_[j];
+        for (int c = 0; c < 6; ++c) T[c] += f * (Ri[c] + Rj[c]);
+      }
+      const bool wall = kj == Kind::DummyWall;
+      if (!(wall && free_slip_walls_)) {
+        double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
+        if (wall && wvx) { ux = vxi - wvx[j]; uy = vyi - wvy[j]; uz = vzi - wvz[j]; }
+        const double vr = ux * dx + uy * dy + uz * dz;
+        if (vr < 0) {
+          const double mu = h * vr / (r2 + eta2);
+          const double Pi = (-alpha_c * mu + beta * mu * mu) / (0.5 * (rhoi + P.rho[j]));
+          T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
+        }
+      }
+      // (T . grad W)_a with T symmetric: components xx yy zz xy xz yz
+      ax += mj * (T[0] * gx + T[3] * gy + T[4] * gz);
+      ay += mj * (T[3] * gx + T[1] * gy + T[5] * gz);
+      az += mj * (T[4] * gx + T[5] * gy + T[2] * gz);
+    });
+    P.ax[i] = ax + g[0] + scene_.body_force[0];
+    P.ay[i] = ay + g[1] + scene_.body_force[1];
+    P.az[i] = az + g[2] + scene_.body_force[2];
+  }
+}
+
+}  // namespace geosph

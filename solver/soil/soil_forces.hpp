@@ -1,0 +1,66 @@
+// Elasto-plastic soil as an SPH continuum (Bui, Fukagawa, Sako & Ohno 2008, Int. J. Numer. Anal.
+// Meth. Geomech. 32, 1537-1570), tension positive:
+//   velocity gradient  L_i = sum_j V_j (v_j - v_i) (x) grad_i W_ij                 (Bui 2008, eq. 30)
+//                      optionally corrected, L_i <- L_i B_i^-1, B_i = sum_j V_j (x_j - x_i) (x) grad_i W_ij,
+//                      exact for linear velocity fields also at free surfaces (Bonet & Lok 1999,
+//                      Comput. Methods Appl. Mech. Engrg. 180, eq. 22; numerics.kernel_gradient_correction)
+//   continuity         d rho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij
+//   stress             Jaumann rate + Drucker-Prager return mapping (soil/drucker_prager.hpp)
+//   momentum           dv_i/dt = sum_j m_j (S_i + S_j + (R_i + R_j) f_ij^n - Pi_ij I) . grad_i W_ij + g,
+//                      S = sigma / rho^2                                           (Bui 2008, eq. 29)
+//   artificial viscosity Pi_ij = (-alpha c mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
+//                                                                                  (Monaghan 1992, eq. 4.2)
+//   artificial stress  R = -epsilon sigma'_aa / rho^2 on tensile principal stresses, rotated back;
+//                      f_ij = W(r_ij) / W(dx)            (Gray, Monaghan & Swift 2001, eqs. 3.1-3.6)
+// Pressure p = -tr(sigma)/3 is an output of the constitutive model, not an equation of state.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+#include "io/scene.hpp"
+#include "soil/drucker_prager.hpp"
+
+namespace geosph {
+
+// Names of the per-particle soil fields (allocated only when a scene has soil).
+struct SoilFields {
+  static constexpr const char* xx = "stress_xx";
+  static constexpr const char* yy = "stress_yy";
+  static constexpr const char* zz = "stress_zz";
+  static constexpr const char* xy = "stress_xy";
+  static constexpr const char* xz = "stress_xz";
+  static constexpr const char* yz = "stress_yz";
+  static constexpr const char* plastic_strain = "plastic_strain";
+};
+
+class SoilForces {
+ public:
+  explicit SoilForces(const Scene& scene);
+  void allocate(Particles& P) const;
+  double max_wave_speed() const;
+  double density(std::size_t material) const { return scene_.soils[material].density; }
+
+  // At x^{n+1} with v^{n+1/2}: density rate and the stress update over dt (velocity gradient,
+  // Jaumann rotation, return mapping). Throws InstabilityError if a stress becomes non-finite.
+  void update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const;
+  // Accelerations of soil particles (after the wall particles carry their extrapolated stress).
+  void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+
+ private:
+  template <class K>
+  void update_stress_with(const K& kernel, Particles& P, const CellList& cells, double dt, long step,
+                          double time) const;
+  template <class K>
+  void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  void prepare_pair_terms(Particles& P) const;  // S = sigma/rho^2 and artificial stress R per particle
+
+  const Scene& scene_;
+  std::vector<soil::DruckerPrager> models_;
+  std::vector<char> elastic_only_;  // linear_elastic materials: Jaumann rotation + elastic increment only
+  bool free_slip_walls_;
+  mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
+};
+
+}  // namespace geosph

@@ -1,0 +1,162 @@
+// 2D collapse of a column of aluminium bars (Bui, Fukagawa, Sako & Ohno 2008): a 0.2 m x 0.1 m
+// column of cohesionless Drucker-Prager material released from rest against the back wall. At the
+// end the free-surface profile, the run-out and the failure line (boundary of the static wedge, in
+// the initial configuration) are compared with the experiment.
+#include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
+
+#include <gsl/gsl_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "harness/catalogue.hpp"
+#include "harness/metrics.hpp"
+#include "harness/run_stats.hpp"
+
+namespace geosph::verify {
+
+namespace {
+
+struct Profile {
+  std::vector<double> x, h;  // bin centres and surface heights
+};
+
+// Free surface: the highest soil particle's top (centre + dx/2) in bins of width dx along x.
+Profile surface_profile(const Particles& P, double x0, double floor_y, double dx) {
+  double xmax = x0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) xmax = std::max(xmax, P.x[i]);
+  const auto nb = static_cast<std::size_t>(std::ceil((xmax - x0) / dx)) + 1;
+  Profile pr;
+  pr.h.assign(nb, 0.0);
+  for (std::size_t b = 0; b < nb; ++b) pr.x.push_back(x0 + (b + 0.5) * dx);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const auto b = std::min(nb - 1, static_cast<std::size_t>(std::max(0.0, (P.x[i] - x0) / dx)));
+    pr.h[b] = std::max(pr.h[b], P.y[i] + 0.5 * dx - floor_y);
+  }
+  return pr;
+}
+
+// Run-out: the front of the soil on the floor (particles within 2 dx of it), at the particle's edge.
+double runout(const Particles& P, double floor_y, double dx) {
+  double xmax = -1e300;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil && P.y[i] < floor_y + 2 * dx) xmax = std::max(xmax, P.x[i]);
+  return xmax + 0.5 * dx;
+}
+
+// Failure line in the initial configuration: for each initial column of particles (x bins of width
+// dx), the top of the static wedge = highest initial y among particles displaced less than
+// `still`; a least-squares line (GSL) through the wedge tops that lie strictly inside the column
+// gives the failure angle to the horizontal.
+double failure_angle_deg(const Particles& P, const std::vector<double>& x0, const std::vector<double>& y0,
+                         double col_lo, double col_hi, double height, double dx, double still, Series& line) {
+  const auto nb = static_cast<std::size_t>(std::lround((col_hi - col_lo) / dx));
+  std::vector<double> top(nb, -1.0);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const auto id = static_cast<std::size_t>(P.id[i]);
+    const double d = std::hypot(P.x[i] - x0[id], P.y[i] - y0[id]);
+    if (d >= still) continue;
+    const auto b = std::min(nb - 1, static_cast<std::size_t>((x0[id] - col_lo) / dx));
+    top[b] = std::max(top[b], y0[id] + 0.5 * dx);
+  }
+  std::vector<double> xs, ys;
+  for (std::size_t b = 0; b < nb; ++b)
+    if (top[b] > 0 && top[b] < height - 1.5 * dx) {
+      xs.push_back(col_lo + (b + 0.5) * dx);
+      ys.push_back(top[b]);
+    }
+  line.x = xs;
+  line.y = ys;
+  if (xs.size() < 3) return NAN;
+  double c0, c1, c00, c01, c11, ss;
+  gsl_fit_linear(xs.data(), 1, ys.data(), 1, xs.size(), &c0, &c1, &c00, &c01, &c11, &ss);
+  return std::atan(std::abs(c1)) * 180.0 / std::numbers::pi;
+}
+
+double header_number(const Csv& csv, const std::string& key) {
+  const std::string v = csv.comment(key);
+  return v.empty() ? NAN : std::stod(v);
+}
+
+}  // namespace
+
+std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) {
+  const CaseConfig cfg = load_case(ctx, "granular_collapse_bui");
+  Scene scene = cfg.scene(cfg.level_number("dx"));
+  Simulation sim(scene);
+  Record rec = start_record(cfg, ctx);
+  const auto& col = scene.bodies.front();
+  const double dx = scene.dx, floor_y = col.lo[1], H0 = col.hi[1] - col.lo[1];
+
+  // initial positions by particle id (ids are the original indices)
+  const Particles& P0 = sim.particles();
+  std::vector<double> x0(P0.size()), y0(P0.size());
+  for (std::size_t i = 0; i < P0.size(); ++i) {
+    x0[static_cast<std::size_t>(P0.id[i])] = P0.x[i];
+    y0[static_cast<std::size_t>(P0.id[i])] = P0.y[i];
+  }
+
+  Series front{"SPH run-out", "simulation", "runout_history", "t [s]", "run-out [m]", {}, {}};
+  double next = 0;
+  const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
+    if (s.time() < next) return;
+    next += 0.01;
+    front.x.push_back(s.time());
+    front.y.push_back(runout(s.particles(), floor_y, dx));
+  }, ctx.progress);
+  rec.series.push_back(front);
+
+  const Particles& P = sim.particles();
+  const Profile pr = surface_profile(P, col.lo[0], floor_y, dx);
+  rec.series.push_back({"SPH", "simulation", "profile", "x [m]", "height [m]", pr.x, pr.h});
+
+  const Csv exp = read_csv(cfg.reference_file(ctx, cfg.spec.at("reference_profile")).string());
+  rec.series.push_back({"Bui et al. 2008 (experiment)", "experiment", "profile", "x [m]", "height [m]",
+                        exp.column("x"), exp.column("y")});
+  const double still = cfg.spec.at("still_displacement_m");
+  Series fl{"SPH failure line (static-wedge top)", "simulation", "failure_line", "x [m]", "y [m]", {}, {}};
+  const double angle = ok ? failure_angle_deg(P, x0, y0, col.lo[0], col.hi[0], H0, dx, still, fl) : NAN;
+  rec.series.push_back(fl);
+  const Csv exp_line = read_csv(cfg.reference_file(ctx, "experimental/granular_collapse_bui_2008_failure_line.csv").string());
+  rec.series.push_back({"Bui et al. 2008 failure line (experiment)", "experiment", "failure_line", "x [m]", "y [m]",
+                        exp_line.column("x"), exp_line.column("y")});
+  rec.extra["failure_angle_deg_reference"] = header_number(exp, "failure_angle_deg");
+
+  const double sph_runout = ok ? runout(P, floor_y, dx) - col.lo[0] : NAN;
+  double sph_height = 0;
+  for (double h : pr.h) sph_height = std::max(sph_height, h);
+  rec.extra["runout_m"] = sph_runout;
+  rec.extra["final_height_m"] = sph_height;
+  rec.extra["failure_angle_deg"] = angle;
+
+  // profile: heights at the experiment's x, relative L2 over the heights
+  if (cfg.tolerances.count("profile_rel_l2")) {
+    std::vector<double> hs, he;
+    for (std::size_t k = 0; k < exp.column("x").size(); ++k) {
+      const double xq = exp.column("x")[k];
+      he.push_back(exp.column("y")[k]);
+      hs.push_back(xq > pr.x.back() + 0.5 * dx ? 0.0 : interpolate(pr.x, pr.h, xq));
+    }
+    const auto& tol = cfg.tolerance("profile_rel_l2");
+    rec.add_metric("profile_rel_l2", ok ? relative_l2(hs, he) : NAN, tol.value, tol.why);
+  }
+  const std::vector<std::tuple<std::string, std::string, double>> scalars = {
+      {"runout_rel_error", "runout_m", sph_runout},
+      {"final_height_rel_error", "final_height_m", sph_height},
+      {"failure_angle_rel_error", "failure_angle_deg", angle}};
+  for (const auto& [metric, key, value] : scalars) {
+    if (!cfg.tolerances.count(metric)) continue;
+    const double ref = header_number(exp, key);
+    rec.extra[key + std::string("_reference")] = ref;
+    const auto& tol = cfg.tolerance(metric);
+    rec.add_metric(metric, ok ? std::abs(value - ref) / ref : NAN, tol.value, tol.why);
+  }
+  rec.snapshot = field_snapshot(sim, "plastic_strain", "-");
+  return {rec};
+}
+
+}  // namespace geosph::verify
