@@ -74,8 +74,15 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
   ctx.threads = omp_get_max_threads();
   ctx.progress = progress;
   std::vector<const verify::CaseEntry*> todo;
-  for (const auto& c : verify::catalogue())
-    if (names.empty() || std::find(names.begin(), names.end(), c.name) != names.end()) todo.push_back(&c);
+  for (const auto& c : verify::catalogue()) {
+    if (!names.empty() && std::find(names.begin(), names.end(), c.name) == names.end()) continue;
+    // without --case, a level that only some cases define (convergence) runs those cases
+    if (names.empty() && !verify::case_has_level(ctx, c.name, level)) {
+      std::fprintf(stderr, "(%s has no '%s' level, skipped)\n", c.name.c_str(), level.c_str());
+      continue;
+    }
+    todo.push_back(&c);
+  }
   for (const auto& n : names) {
     bool known = false;
     for (const auto& c : verify::catalogue()) known = known || c.name == n;
@@ -130,7 +137,7 @@ int main(int argc, char** argv) {
   std::string level = "quick", vout;
   bool vprogress = false;
   ver->add_option("--case", cases, "case name (repeatable; default: all)");
-  ver->add_option("--level", level, "resolution level")->check(CLI::IsMember({"quick", "full"}));
+  ver->add_option("--level", level, "resolution level")->check(CLI::IsMember({"quick", "full", "convergence"}));
   ver->add_option("--out", vout, "directory for the result records")->required();
   ver->add_flag("--progress", vprogress, "show progress of each run");
 

@@ -64,6 +64,26 @@ double CaseConfig::level_number(const std::string& key) const {
   return level[key].get<double>();
 }
 
+std::vector<double> CaseConfig::level_numbers(const std::string& key) const {
+  if (level.contains(key) && level[key].is_array()) {
+    std::vector<double> v;
+    for (const auto& e : level[key]) {
+      if (!e.is_number())
+        throw InputError((dir / "case.json").string() + ": field 'levels.<level>." + key + "': must hold numbers");
+      v.push_back(e.get<double>());
+    }
+    if (!v.empty()) return v;
+  }
+  return {level_number(key)};
+}
+
+bool case_has_level(const CaseContext& ctx, const std::string& name, const std::string& level) {
+  std::ifstream in(ctx.data_dir / "verification" / "cases" / name / "case.json");
+  if (!in) return false;
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() && j.contains("levels") && j["levels"].contains(level);
+}
+
 Scene CaseConfig::scene(double dx) const {
   nlohmann::json j = scene_json;
   j["dx"] = dx;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,12 +34,17 @@ struct CaseConfig {
 
   const Tolerance& tolerance(const std::string& metric) const;
   double level_number(const std::string& key) const;
+  // A number or a list of numbers (several resolutions, coarse to fine).
+  std::vector<double> level_numbers(const std::string& key) const;
   // The case's scene with its particle spacing set to dx.
   Scene scene(double dx) const;
   std::filesystem::path reference_file(const CaseContext& ctx, const std::string& relative) const;
 };
 
 CaseConfig load_case(const CaseContext& ctx, const std::string& name);
+// Whether verification/cases/<name>/case.json defines the level (e.g. only some cases have a
+// "convergence" level).
+bool case_has_level(const CaseContext& ctx, const std::string& name, const std::string& level);
 std::filesystem::path default_data_dir();
 
 }  // namespace geosph::verify

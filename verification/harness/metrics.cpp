@@ -1,5 +1,7 @@
 #include "harness/metrics.hpp"
 
+#include "harness/record.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -90,6 +92,19 @@ Csv read_csv(const std::string& path) {
   }
   if (csv.columns.empty() || csv.data[0].empty()) throw InputError(path + ": no data rows");
   return csv;
+}
+
+
+
+void annotate_observed_order(std::vector<Record>& records, double expected_order) {
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    if (expected_order >= 0) records[k].extra["expected_order"] = expected_order;
+    if (k == 0) continue;
+    const Record &c = records[k - 1], &f = records[k];
+    if (!c.stable || !f.stable || c.metrics.empty() || f.metrics.empty()) continue;
+    const double e1 = c.metrics[0].value, e2 = f.metrics[0].value;
+    if (e1 > 0 && e2 > 0 && c.dx != f.dx) records[k].extra["observed_order"] = observed_order(c.dx, e1, f.dx, e2);
+  }
 }
 
 }  // namespace geosph::verify

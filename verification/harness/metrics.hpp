@@ -25,4 +25,10 @@ struct Csv {
 };
 Csv read_csv(const std::string& path);
 
+struct Record;
+// For records of one case at successive spacings (coarse to fine): the observed order of the first
+// metric between each pair, stored on the finer record as "observed_order", and the expected
+// order (if >= 0) as "expected_order".
+void annotate_observed_order(std::vector<Record>& records, double expected_order);
+
 }  // namespace geosph::verify

@@ -53,9 +53,9 @@ double best_time_lag(const std::vector<double>& Ts, const std::vector<double>& Z
 }
 }  // namespace
 
-std::vector<Record> run_dam_break_2d(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "dam_break_2d");
-  Scene scene = cfg.scene(cfg.level_number("dx"));
+namespace {
+Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
+  Scene scene = cfg.scene(spacing);
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
   const auto& col = scene.bodies.front();
@@ -107,7 +107,17 @@ std::vector<Record> run_dam_break_2d(const CaseContext& ctx) {
     }
   }
   rec.snapshot = pressure_snapshot(sim);
-  return {rec};
+  return rec;
+}
+}  // namespace
+
+// One record per spacing of the level (a number or a list, e.g. the convergence level).
+std::vector<Record> run_dam_break_2d(const CaseContext& ctx) {
+  const CaseConfig cfg = load_case(ctx, "dam_break_2d");
+  std::vector<Record> out;
+  for (double dx : cfg.level_numbers("dx")) out.push_back(run_at(cfg, ctx, dx));
+  annotate_observed_order(out, cfg.spec.value("expected_order", -1.0));
+  return out;
 }
 
 }  // namespace geosph::verify

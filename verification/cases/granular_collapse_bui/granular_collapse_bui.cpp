@@ -84,9 +84,9 @@ double header_number(const Csv& csv, const std::string& key) {
 
 }  // namespace
 
-std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "granular_collapse_bui");
-  Scene scene = cfg.scene(cfg.level_number("dx"));
+namespace {
+Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
+  Scene scene = cfg.scene(spacing);
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
   const auto& col = scene.bodies.front();
@@ -156,7 +156,17 @@ std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) {
     rec.add_metric(metric, ok ? std::abs(value - ref) / ref : NAN, tol.value, tol.why);
   }
   rec.snapshot = field_snapshot(sim, "plastic_strain", "-");
-  return {rec};
+  return rec;
+}
+}  // namespace
+
+// One record per spacing of the level (a number or a list, e.g. the convergence level).
+std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) {
+  const CaseConfig cfg = load_case(ctx, "granular_collapse_bui");
+  std::vector<Record> out;
+  for (double dx : cfg.level_numbers("dx")) out.push_back(run_at(cfg, ctx, dx));
+  annotate_observed_order(out, cfg.spec.value("expected_order", -1.0));
+  return out;
 }
 
 }  // namespace geosph::verify

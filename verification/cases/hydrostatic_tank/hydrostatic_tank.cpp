@@ -17,9 +17,9 @@
 
 namespace geosph::verify {
 
-std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "hydrostatic_tank");
-  Scene scene = cfg.scene(cfg.level_number("dx"));
+namespace {
+Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
+  Scene scene = cfg.scene(spacing);
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
 
@@ -86,7 +86,17 @@ std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) {
     rec.add_metric("pressure_rel_l2", NAN, cfg.tolerance("pressure_rel_l2").value, cfg.tolerance("pressure_rel_l2").why);
   }
   rec.snapshot = pressure_snapshot(sim);
-  return {rec};
+  return rec;
+}
+}  // namespace
+
+// One record per spacing of the level (a number or a list, e.g. the convergence level).
+std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) {
+  const CaseConfig cfg = load_case(ctx, "hydrostatic_tank");
+  std::vector<Record> out;
+  for (double dx : cfg.level_numbers("dx")) out.push_back(run_at(cfg, ctx, dx));
+  annotate_observed_order(out, cfg.spec.value("expected_order", -1.0));
+  return out;
 }
 
 }  // namespace geosph::verify

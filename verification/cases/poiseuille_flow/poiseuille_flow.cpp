@@ -63,18 +63,12 @@ std::vector<Record> run_poiseuille_flow(const CaseContext& ctx) {
       rec.series.push_back(a);
     }
     rec.add_metric("velocity_rms_over_vmax", ok ? worst : NAN, tol.value, tol.why);
-    // Expected order 1: the SPH Laplacian (Morris 1997) is second order in the interior, but the
-    // no-slip dummy-wall extrapolation (Adami 2012) places the wall velocity with O(dx) error,
-    // which dominates the profile error near the plates.
-    rec.extra["expected_order"] = 1.0;
     out.push_back(rec);
   }
-  // observed order between successive spacings, recorded on the finer record
-  for (std::size_t k = 1; k < out.size(); ++k) {
-    const auto &c = out[k - 1], &f = out[k];
-    if (c.stable && f.stable)
-      out[k].extra["observed_order"] = observed_order(c.dx, c.metrics[0].value, f.dx, f.metrics[0].value);
-  }
+  // Expected order 1: the SPH Laplacian (Morris 1997) is second order in the interior, but the
+  // no-slip dummy-wall extrapolation (Adami 2012) places the wall velocity with O(dx) error,
+  // which dominates the profile error near the plates.
+  annotate_observed_order(out, 1.0);
   return out;
 }
 
