@@ -57,10 +57,13 @@ def _metric_rows(recs, run_cells=_run_cells):
     for r in recs:
         for m in r.metrics:
             ok = m["passed"] and r.stable
+            status = _status(ok, not r.stable)
+            if not r.scored:  # reported for information (e.g. the stability study), not judged
+                status = ("study: " + status[0].lower(), "status")
             rows.append([escape(r.case), escape(r.level), escape(r.variant or "default"),
                          escape(m["name"]), (fmt(m["value"]), "num"), (fmt(m["tolerance"]), "num"),
-                         escape(m["why_tolerance"]), _status(ok, not r.stable)] + run_cells(r))
-            classes.append("pass" if ok else "fail")
+                         escape(m["why_tolerance"]), status] + run_cells(r))
+            classes.append("study" if not r.scored else ("pass" if ok else "fail"))
     return rows, classes
 
 
@@ -154,12 +157,13 @@ def stability_section(records):
     for r in recs:
         f = r.failure or {}
         opts = ", ".join(f"{k}={v}" for k, v in sorted(r.options.items()))
+        first = f'{r.first["name"]} = {fmt(r.first["value"])}'
         rows.append([escape(r.case), escape(r.variant or "default"), (fmt(r.dx), "num"),
-                     f"<code>{escape(opts)}</code>", ("yes" if r.stable else "NO", "status"),
+                     f"<code>{escape(opts)}</code>", escape(first), ("yes" if r.stable else "NO", "status"),
                      (fmt(f.get("step")), "num"), (fmt(f.get("time")), "num"),
                      escape(str(f.get("message", "")))])
         classes.append("pass" if r.stable else "fail")
-    return table(["case", "variant", "dx", "options", "stable", "failure step", "failure time",
+    return table(["case", "variant", "dx", "options", "result", "stable", "failure step", "failure time",
                   "failure message"], rows, classes)
 
 
@@ -173,11 +177,13 @@ def write_report(records, out_dir, source=""):
     body = "\n".join(f'<section id="{sid}">\n<h2>{escape(title)}</h2>\n{bodies[sid]}\n</section>'
                      for sid, title in SECTIONS)
     n_fail = sum(not r.passed for r in records)
+    n_study = sum(not r.scored for r in records)
     cases = group_by(records, lambda r: r.case)
     c_fail = sum(not all(r.passed for r in rs) for rs in cases.values())
-    totals = (f'<span class="pass">{len(records) - n_fail} passed</span> '
+    totals = (f'<span class="pass">{len(records) - n_fail - n_study} passed</span> '
               f'<span class="fail">{n_fail} failed</span> '
-              f"records &middot; {len(cases) - c_fail} of {len(cases)} cases passing")
+              + (f"{n_study} unscored studies " if n_study else "")
+              + f"records &middot; {len(cases) - c_fail} of {len(cases)} cases passing")
     page = Template(TEMPLATE.read_text(encoding="utf-8")).substitute(
         title="GeoSPH verification &amp; validation report",
         generated=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),

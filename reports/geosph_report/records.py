@@ -44,10 +44,13 @@ class Record:
     series: list = field(default_factory=list)
     snapshot: dict = None
     relpath: str = None  # path relative to the results directory, for display
+    scored: bool = True  # False: a study run (e.g. a stabilisation switched off), reported, not judged
 
     @property
     def passed(self):
-        """True when the run was stable and every metric passed."""
+        """True when the run was stable and every metric passed; a study run never fails."""
+        if not self.scored:
+            return True
         return self.stable and all(m["passed"] for m in self.metrics)
 
     @property
@@ -172,6 +175,7 @@ def parse_record(obj, path="<record>"):
         series=[_series(c, s, i) for i, s in
                 enumerate(c.get(obj, "series", "list", required=False) or [])],
         snapshot=_snapshot(c, c.get(obj, "snapshot", "object", required=False)),
+        scored=c.get(obj, "scored", "boolean", required=False) is not False,
     )
     if rec.level not in LEVELS:
         c.fail(f"field 'level' must be one of {', '.join(LEVELS)}, got {rec.level!r}")

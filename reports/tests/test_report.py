@@ -158,3 +158,28 @@ class MalformedTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class StudyRecordTest(unittest.TestCase):
+    """A record with "scored": false (a stabilisation switched off) is shown, never counted as failing."""
+
+    def test_unscored_failing_record_is_a_study(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            root = Path(tmp)
+            recs = {
+                "plate/ok.json": synthetic.base("plate", 0.002),
+                "plate/off.json": synthetic.base(
+                    "plate", 0.002, variant="no_artificial_stress", scored=False,
+                    options={"artificial_stress": 0.0},
+                    metrics=synthetic._metric("frequency_rel_error", 0.26, 0.05, "synthetic")),
+            }
+            synthetic.write(root / "results", recs)
+            loaded = records.load_records(root / "results")
+            self.assertTrue(all(r.passed for r in loaded))
+            html = write_report(loaded, root / "report", source=root / "results").read_text()
+            summary = html.split('<section id="summary">')[1].split("</section>")[0]
+            self.assertIn("study: fail", html)
+            self.assertIn("1 passed</span>", html)
+            self.assertIn("0 failed</span> 1 unscored studies", html)
+            stability = html.split('<section id="stability">')[1].split("</section>")[0]
+            self.assertIn("frequency_rel_error = 0.26", stability)

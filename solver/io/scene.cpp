@@ -26,6 +26,16 @@ FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
   return m;
 }
 
+// min/max corners of a box, max > min on every axis
+ContainerSpec parse_box(const JsonFields& f, int dim) {
+  ContainerSpec b;
+  b.lo = f.vector("min", dim);
+  b.hi = f.vector("max", dim);
+  for (int a = 0; a < dim; ++a)
+    if (!(b.hi[a] > b.lo[a])) f.fail("max", "must be greater than min on every axis");
+  return b;
+}
+
 SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
   SoilMaterial m;
   m.name = name;
@@ -152,22 +162,14 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     if (!w->has("containers") && !w->has("blocks")) w->fail("containers", "is missing: walls need 'containers' or 'blocks'");
     if (w->has("containers"))
     for (auto& c : w->array_of_objects("containers")) {
-      ContainerSpec cs;
-      cs.lo = c.vector("min", d);
-      cs.hi = c.vector("max", d);
-      for (int a = 0; a < d; ++a)
-        if (!(cs.hi[a] > cs.lo[a])) c.fail("max", "must be greater than min on every axis");
+      ContainerSpec cs = parse_box(c, d);
       cs.open = c.texts("open", kSides);
       c.reject_unknown();
       s.walls.containers.push_back(cs);
     }
     if (w->has("blocks"))
       for (auto& c : w->array_of_objects("blocks")) {
-        ContainerSpec cs;
-        cs.lo = c.vector("min", d);
-        cs.hi = c.vector("max", d);
-        for (int a = 0; a < d; ++a)
-          if (!(cs.hi[a] > cs.lo[a])) c.fail("max", "must be greater than min on every axis");
+        ContainerSpec cs = parse_box(c, d);
         c.reject_unknown();
         s.walls.blocks.push_back(cs);
       }

@@ -3,6 +3,7 @@
 #include "cases/dam_break_2d/dam_break_2d.hpp"
 #include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
+#include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
 
 namespace geosph::verify {
@@ -13,6 +14,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"poiseuille_flow", run_poiseuille_flow},
       {"dam_break_2d", run_dam_break_2d},
       {"granular_collapse_bui", run_granular_collapse_bui},
+      {"oscillating_plate", run_oscillating_plate},
   };
   return cases;
 }

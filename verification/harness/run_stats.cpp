@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "harness/metrics.hpp"
 #include "sim/progress.hpp"
 
 namespace geosph::verify {
@@ -58,6 +59,15 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
   rec.wall_s += wall;
   rec.particle_steps_per_s = rec.wall_s > 0 ? rec.particles * static_cast<double>(rec.steps) / rec.wall_s : 0;
   return ok;
+}
+
+std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& name,
+                                     const std::function<Record(const CaseConfig&, const CaseContext&, double)>& run_at) {
+  const CaseConfig cfg = load_case(ctx, name);
+  std::vector<Record> out;
+  for (double dx : cfg.level_numbers("dx")) out.push_back(run_at(cfg, ctx, dx));
+  annotate_observed_order(out, cfg.spec.value("expected_order", -1.0));
+  return out;
 }
 
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points) {

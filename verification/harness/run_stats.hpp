@@ -2,6 +2,7 @@
 #pragma once
 #include <functional>
 
+#include "harness/case_config.hpp"
 #include "harness/record.hpp"
 #include "sim/simulation.hpp"
 
@@ -12,6 +13,11 @@ namespace geosph::verify {
 // sets stable = false with the diagnosis and returns false.
 bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simulation&)>& observe,
                bool progress, double until = -1);
+
+// Runs `run_at` once per spacing of the requested level of case `name` (coarse to fine) and
+// annotates the records with the observed order (and case.json's expected_order, if any).
+std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& name,
+                                     const std::function<Record(const CaseConfig&, const CaseContext&, double)>& run_at);
 
 // Final particle snapshot (fluid only, at most max_points) coloured by pressure.
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points = 6000);

@@ -10,6 +10,7 @@
 
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
+#include "test_scenes.hpp"
 
 using namespace geosph;
 using nlohmann::json;
@@ -153,18 +154,7 @@ TEST(SceneInput, CommandLineRejectsBadSceneWithoutWritingOutput) {
 // Soil materials: moduli, Poisson ratio, friction and dilatancy angles are range-checked and the
 // message names the material and the field.
 namespace {
-json soil_scene() {
-  return json::parse(R"({
-    "name": "column", "dimension": 2, "dx": 0.01,
-    "domain": {"min": [-0.1, -0.1], "max": [0.5, 0.5]},
-    "gravity": [0, -9.81],
-    "time": {"end": 0.01},
-    "materials": {"sand": {"model": "drucker_prager", "density": 2650, "young_modulus": 0.84e6,
-                           "poisson_ratio": 0.3, "friction_angle": 19.8}},
-    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [0.2, 0.1], "initial": "geostatic"}],
-    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.35, 0.3], "open": ["top"]}]}
-  })");
-}
+json soil_scene() { return geosph::test::soil_column_scene(); }
 }  // namespace
 
 TEST(SceneInput, SoilMaterialRanges) {

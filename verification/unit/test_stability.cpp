@@ -10,6 +10,7 @@
 
 #include "io/scene.hpp"
 #include "sim/simulation.hpp"
+#include "test_scenes.hpp"
 
 using namespace geosph;
 namespace fs = std::filesystem;
@@ -100,16 +101,7 @@ TEST(Stability, StableRunWritesHdf5AndXdmf) {
 }
 
 TEST(Stability, NonFiniteSoilStressIsDiagnosed) {
-  auto j = nlohmann::json::parse(R"({
-    "name": "column", "dimension": 2, "dx": 0.01,
-    "domain": {"min": [-0.1, -0.1], "max": [0.5, 0.5]},
-    "gravity": [0, -9.81],
-    "time": {"end": 0.01},
-    "materials": {"sand": {"model": "drucker_prager", "density": 2650, "young_modulus": 0.84e6,
-                           "poisson_ratio": 0.3, "friction_angle": 19.8}},
-    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [0.2, 0.1], "initial": "geostatic"}],
-    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.35, 0.3], "open": ["top"]}]}
-  })");
+  const auto j = geosph::test::soil_column_scene();
   Simulation sim(parse_scene(j, "column.json"));
   Particles& P = sim.particles();
   std::size_t k = 0;
@@ -129,16 +121,13 @@ TEST(Stability, NonFiniteSoilStressIsDiagnosed) {
 // carry the stress (no particle deficiency at the floor) and the vertical stress at the floor
 // stays rho g H within the kernel's discretisation error.
 TEST(Stability, GeostaticSoilColumnStaysAtRest) {
-  auto j = nlohmann::json::parse(R"({
-    "name": "column", "dimension": 2, "dx": 0.005,
-    "domain": {"min": [-0.05, -0.05], "max": [0.25, 0.2]},
-    "gravity": [0, -9.81],
-    "time": {"end": 0.05},
-    "materials": {"sand": {"model": "drucker_prager", "density": 2000, "young_modulus": 5e6,
-                           "poisson_ratio": 0.3, "friction_angle": 30}},
-    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [0.2, 0.1], "initial": "geostatic"}],
-    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.2, 0.15], "open": ["top"]}]}
-  })");
+  auto j = geosph::test::soil_column_scene(0.005);
+  j["domain"] = {{"min", {-0.05, -0.05}}, {"max", {0.25, 0.2}}};
+  j["time"]["end"] = 0.05;
+  j["materials"]["sand"]["density"] = 2000;
+  j["materials"]["sand"]["young_modulus"] = 5e6;
+  j["materials"]["sand"]["friction_angle"] = 30;
+  j["walls"]["containers"][0]["max"] = {0.2, 0.15};
   Simulation sim(parse_scene(j, "column.json"));
   sim.run();
   const Particles& P = sim.particles();

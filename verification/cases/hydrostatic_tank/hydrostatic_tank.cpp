@@ -90,13 +90,6 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 }
 }  // namespace
 
-// One record per spacing of the level (a number or a list, e.g. the convergence level).
-std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "hydrostatic_tank");
-  std::vector<Record> out;
-  for (double dx : cfg.level_numbers("dx")) out.push_back(run_at(cfg, ctx, dx));
-  annotate_observed_order(out, cfg.spec.value("expected_order", -1.0));
-  return out;
-}
+std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) { return run_each_spacing(ctx, "hydrostatic_tank", run_at); }
 
 }  // namespace geosph::verify

@@ -1,0 +1,23 @@
+// Small scenes shared by the unit tests.
+#pragma once
+#include <nlohmann/json.hpp>
+
+namespace geosph::test {
+
+// A 0.2 m x 0.1 m Drucker-Prager column (geostatic start) in a dummy-wall box.
+inline nlohmann::json soil_column_scene(double dx = 0.01) {
+  auto j = nlohmann::json::parse(R"({
+    "name": "column", "dimension": 2,
+    "domain": {"min": [-0.1, -0.1], "max": [0.5, 0.5]},
+    "gravity": [0, -9.81],
+    "time": {"end": 0.01},
+    "materials": {"sand": {"model": "drucker_prager", "density": 2650, "young_modulus": 0.84e6,
+                           "poisson_ratio": 0.3, "friction_angle": 19.8}},
+    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [0.2, 0.1], "initial": "geostatic"}],
+    "walls": {"type": "dummy", "containers": [{"min": [0, 0], "max": [0.35, 0.3], "open": ["top"]}]}
+  })");
+  j["dx"] = dx;
+  return j;
+}
+
+}  // namespace geosph::test
