@@ -131,6 +131,7 @@ Particles build_particles(const Scene& s) {
     lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
       P.field("wall_block").back() = 1.0;
+      P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
     });
   return P;
 }

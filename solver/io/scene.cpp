@@ -170,6 +170,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     if (w->has("blocks"))
       for (auto& c : w->array_of_objects("blocks")) {
         ContainerSpec cs = parse_box(c, d);
+        cs.velocity = c.vector("velocity", d, {0, 0, 0});
         c.reject_unknown();
         s.walls.blocks.push_back(cs);
       }

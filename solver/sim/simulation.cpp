@@ -101,8 +101,13 @@ void Simulation::step() {
   const auto& dom = scene_.domain;
   auto& P = P_;
   const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity
+      P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
+      continue;
+    }
     if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
     P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
     P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];

@@ -5,6 +5,7 @@
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 #include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
+#include "cases/strip_footing/strip_footing.hpp"
 
 namespace geosph::verify {
 
@@ -15,6 +16,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"dam_break_2d", run_dam_break_2d},
       {"granular_collapse_bui", run_granular_collapse_bui},
       {"oscillating_plate", run_oscillating_plate},
+      {"strip_footing", run_strip_footing},
   };
   return cases;
 }

@@ -7,6 +7,7 @@
 #include <gsl/gsl_fit.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 
@@ -154,6 +155,27 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     rec.extra[key + std::string("_reference")] = ref;
     const auto& tol = cfg.tolerance(metric);
     rec.add_metric(metric, ok ? std::abs(value - ref) / ref : NAN, tol.value, tol.why);
+  }
+  // DEM reference (LIGGGHTS, reference/dem): overlaid, and its profile and run-out differences are
+  // recorded (not scored: the DEM micro-parameters are calibrated on the angle of repose only, see
+  // reference/dem/README.md).
+  const auto dem_file = cfg.reference_file(ctx, "dem/collapse_a0.5.csv");
+  if (std::filesystem::exists(dem_file)) {
+    const Csv dem = read_csv(dem_file.string());
+    rec.series.push_back({"LIGGGHTS DEM", "dem", "profile", "x [m]", "height [m]", dem.column("x"), dem.column("y")});
+    std::vector<double> hs, hd;
+    for (std::size_t k = 0; k < dem.column("x").size(); ++k) {
+      const double xq = dem.column("x")[k];
+      hd.push_back(dem.column("y")[k]);
+      hs.push_back(xq > pr.x.back() + 0.5 * dx ? 0.0 : interpolate(pr.x, pr.h, xq));
+    }
+    const double dem_runout = header_number(dem, "runout_m");
+    rec.extra["dem_runout_m"] = dem_runout;
+    rec.extra["dem_final_height_m"] = header_number(dem, "final_height_m");
+    if (ok) {
+      rec.extra["profile_rel_l2_vs_dem"] = relative_l2(hs, hd);
+      rec.extra["runout_rel_diff_vs_dem"] = (sph_runout - dem_runout) / dem_runout;
+    }
   }
   rec.snapshot = field_snapshot(sim, "plastic_strain", "-");
   return rec;
