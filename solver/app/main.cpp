@@ -105,7 +105,7 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
       fs::rename(tmp, fs::path(out_dir) / file);
       for (const auto& m : r.metrics)
         std::printf("%-18s dx=%-9.4g %-32s %-12.5g tol %-10.4g %s\n", c->name.c_str(), r.dx, m.name.c_str(), m.value,
-                    m.tolerance, m.passed ? "PASS" : "FAIL");
+                    m.tolerance, r.scored ? (m.passed ? "PASS" : "FAIL") : (m.passed ? "study: pass" : "study: fail"));
       std::printf("%-18s dx=%-9.4g %ld particles, %ld steps, %.2f s wall, %.3g particle-steps/s, %s%s\n",
                   c->name.c_str(), r.dx, r.particles, r.steps, r.wall_s, r.particle_steps_per_s,
                   r.stable ? "stable" : "UNSTABLE", r.scored ? "" : " (study, not scored)");

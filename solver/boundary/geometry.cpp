@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fluid/equation_of_state.hpp"
+#include "soil/soil_fields.hpp"
 
 namespace geosph {
 
@@ -43,9 +44,9 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
     if (geostatic) {
       const double depth = b.hi[up] - (up == 1 ? y : z);
       const double sv = -m.density * g * depth;
-      P.field("stress_xx")[i] = k0 * sv;
-      P.field(up == 1 ? "stress_yy" : "stress_zz")[i] = sv;
-      P.field(up == 1 ? "stress_zz" : "stress_yy")[i] = k0 * sv;
+      P.field(SoilFields::xx)[i] = k0 * sv;
+      P.field(up == 1 ? SoilFields::yy : SoilFields::zz)[i] = sv;
+      P.field(up == 1 ? SoilFields::zz : SoilFields::yy)[i] = k0 * sv;
       P.p[i] = -(1.0 + 2.0 * k0) * sv / 3.0;
     }
   });

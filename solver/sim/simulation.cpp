@@ -100,7 +100,7 @@ void Simulation::step() {
   const double half = 0.5 * dt_, dt = dt_;
   const auto& dom = scene_.domain;
   auto& P = P_;
-  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;  // re-read after reordering
   const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -127,10 +127,10 @@ void Simulation::step() {
   for (std::size_t i = 0; i < n; ++i)
     if (is_moving(P.kind[i])) P.rho[i] += dt * P.drho[i];
   forces();
-  const double* held = P.has_field("fixed") ? P.field("fixed").data() : nullptr;  // re-read: permuted
+  if (fixed) fixed = P.field("fixed").data();  // neighbour_search may have reordered the particles
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_moving(P.kind[i]) || (held && held[i] > 0)) continue;
+    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
     P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
   }
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);

@@ -96,12 +96,13 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         if (wvx) { vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j]; }  // no slip: 2 v_wall - v_soil
       }
       const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
-      const double rji[3] = {-dx, -dy, -dz};  // x_j - x_i
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) {
-          L[a][b] += Vj * dv[a] * grad[b];
-          B[a][b] += Vj * rji[a] * grad[b];
-        }
+        for (int b = 0; b < 3; ++b) L[a][b] += Vj * dv[a] * grad[b];
+      if (correct) {
+        const double rji[3] = {-dx, -dy, -dz};  // x_j - x_i
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) B[a][b] += Vj * rji[a] * grad[b];
+      }
     });
     if (correct) {
       // L <- L B^-1 on the in-plane block (B is the identity for a full, regular support)

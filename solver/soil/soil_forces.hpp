@@ -21,19 +21,9 @@
 #include "core/particles.hpp"
 #include "io/scene.hpp"
 #include "soil/drucker_prager.hpp"
+#include "soil/soil_fields.hpp"
 
 namespace geosph {
-
-// Names of the per-particle soil fields (allocated only when a scene has soil).
-struct SoilFields {
-  static constexpr const char* xx = "stress_xx";
-  static constexpr const char* yy = "stress_yy";
-  static constexpr const char* zz = "stress_zz";
-  static constexpr const char* xy = "stress_xy";
-  static constexpr const char* xz = "stress_xz";
-  static constexpr const char* yz = "stress_yz";
-  static constexpr const char* plastic_strain = "plastic_strain";
-};
 
 class SoilForces {
  public:

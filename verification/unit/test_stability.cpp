@@ -2,14 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "io/scene.hpp"
 #include "sim/simulation.hpp"
+#include "soil/soil_fields.hpp"
 #include "test_scenes.hpp"
 
 using namespace geosph;
@@ -107,7 +108,7 @@ TEST(Stability, NonFiniteSoilStressIsDiagnosed) {
   std::size_t k = 0;
   while (P.kind[k] != Kind::Soil) ++k;
   const auto id = P.id[k];
-  P.field("stress_xy")[k] = std::numeric_limits<double>::infinity();
+  P.field(SoilFields::xy)[k] = std::numeric_limits<double>::infinity();
   try {
     sim.step();
     FAIL() << "no instability reported";
@@ -136,7 +137,7 @@ TEST(Stability, GeostaticSoilColumnStaysAtRest) {
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::Soil) continue;
     vmax = std::max(vmax, std::hypot(P.vx[i], P.vy[i]));
-    if (P.y[i] < 0.005 && P.x[i] > 0.05 && P.x[i] < 0.15) { syy_bottom += P.extra_fields().at("stress_yy")[i]; ++n_bottom; }
+    if (P.y[i] < 0.005 && P.x[i] > 0.05 && P.x[i] < 0.15) { syy_bottom += P.extra_fields().at(SoilFields::yy)[i]; ++n_bottom; }
   }
   ASSERT_GT(n_bottom, 0);
   const double expect = -2000 * 9.81 * (0.1 - 0.0025);  // at the bottom row's centre

@@ -14,6 +14,7 @@
 #include "harness/catalogue.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
+#include "soil/soil_fields.hpp"
 
 namespace geosph::verify {
 
@@ -177,7 +178,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       rec.extra["runout_rel_diff_vs_dem"] = (sph_runout - dem_runout) / dem_runout;
     }
   }
-  rec.snapshot = field_snapshot(sim, "plastic_strain", "-");
+  rec.snapshot = field_snapshot(sim, SoilFields::plastic_strain, "-");
   return rec;
 }
 }  // namespace

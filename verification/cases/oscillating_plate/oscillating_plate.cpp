@@ -59,8 +59,10 @@ Record run_variant(const CaseConfig& cfg, const CaseContext& ctx, double spacing
               "tip deflection [m]", {0.0}, {0.0}};
   const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
     const Particles& Q = s.particles();
-    for (std::size_t i = 0; i < Q.size(); ++i)
-      if (Q.id[i] == tip_id) { disp.x.push_back(s.time()); disp.y.push_back(Q.y[i] - y_tip0); break; }
+    if (Q.id[tip] != tip_id)  // the particles were reordered: find the tip again
+      tip = static_cast<std::size_t>(std::find(Q.id.begin(), Q.id.end(), tip_id) - Q.id.begin());
+    disp.x.push_back(s.time());
+    disp.y.push_back(Q.y[tip] - y_tip0);
   }, ctx.progress);
   rec.series.push_back(disp);
   Series theory{"thin-plate theory (undamped)", "analytical", "tip", disp.xlabel, disp.ylabel, {}, {}};

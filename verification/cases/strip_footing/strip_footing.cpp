@@ -11,6 +11,7 @@
 #include "harness/catalogue.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
+#include "soil/soil_fields.hpp"
 
 namespace geosph::verify {
 
@@ -32,7 +33,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     if (s.time() < next) return;
     next += 0.002;
     const Particles& P = s.particles();
-    const auto& syy = P.extra_fields().at("stress_yy");
+    const auto& syy = P.extra_fields().at(SoilFields::yy);
     const double y_base = y_base0 - v * s.time();
     double sum = 0;
     int count = 0;
@@ -55,7 +56,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["footing_width_over_dx"] = B / dx;
   const auto& tol = cfg.tolerance("bearing_capacity_rel_error");
   rec.add_metric("bearing_capacity_rel_error", ok ? std::abs(q_max - q_prandtl) / q_prandtl : NAN, tol.value, tol.why);
-  rec.snapshot = field_snapshot(sim, "plastic_strain", "-");
+  rec.snapshot = field_snapshot(sim, SoilFields::plastic_strain, "-");
   return rec;
 }
 
