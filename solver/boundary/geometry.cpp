@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fluid/equation_of_state.hpp"
+#include "soil/modified_cam_clay.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph {
@@ -26,16 +27,18 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
 }
 
 // Soil body on the lattice. "geostatic": vertical stress -rho g depth and horizontal K0 times it
-// (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement).
+// (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement); "isotropic":
+// sigma = -pressure I. Modified Cam Clay: the preconsolidation pressure is OCR times that of the
+// yield locus through the initial stress (p' floored at min_pressure at the free surface).
 void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
   std::uint16_t mat = 0;
   while (s.soils[mat].name != b.material) ++mat;
   const SoilMaterial& m = s.soils[mat];
   const double vol = std::pow(s.dx, s.dim);
   const int up = s.dim - 1;  // gravity acts along -y (2D) or -z (3D); checked in validate_scene
-  const double g = -s.gravity[up];
+  const double g = -s.gravity[up] * s.initial_gravity_factor();  // geostatic state at the gravity of t = 0
   const double k0 = b.k0 > 0 ? b.k0 : m.poisson / (1.0 - m.poisson);
-  const bool geostatic = b.initial == "geostatic";
+  const bool geostatic = b.initial == "geostatic", isotropic = b.initial == "isotropic";
   lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
     P.add(x, y, z, m.density * vol, m.density, Kind::Soil, mat);
     if (b.fixed) P.field("fixed").back() = 1.0;
@@ -48,6 +51,17 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
       P.field(up == 1 ? SoilFields::yy : SoilFields::zz)[i] = sv;
       P.field(up == 1 ? SoilFields::zz : SoilFields::yy)[i] = k0 * sv;
       P.p[i] = -(1.0 + 2.0 * k0) * sv / 3.0;
+    } else if (isotropic) {
+      for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz}) P.field(f)[i] = -b.pressure;
+      P.p[i] = b.pressure;
+    }
+    if (m.is_cam_clay()) {
+      const double sx = P.field(SoilFields::xx)[i], sy = P.field(SoilFields::yy)[i], sz = P.field(SoilFields::zz)[i];
+      const double pm = (sx + sy + sz) / -3.0;
+      // q = sqrt(3 J2) of the diagonal initial stress
+      const double q = std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)));
+      P.field(SoilFields::preconsolidation)[i] =
+          soil::ModifiedCamClay::preconsolidation_for(std::max(pm, m.min_pressure), q, m.critical_state_slope, b.ocr);
     }
   });
 }
@@ -79,7 +93,7 @@ Particles build_particles(const Scene& s) {
       double rho = eos.rho0;
       if (b.initial == "hydrostatic" && gmag > 0) {
         const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
-        rho = eos.density(eos.hydrostatic_pressure(gmag, depth));
+        rho = eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
       }
       P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
       P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];

@@ -9,7 +9,6 @@ namespace geosph {
 SoilWalls::SoilWalls(const Scene& scene) : scene_(scene), no_slip_(scene.walls.slip == "no_slip") {}
 
 void SoilWalls::allocate(Particles& P) const {
-  if (!no_slip_) return;
   P.field("wall_vx"); P.field("wall_vy"); P.field("wall_vz");
 }
 
@@ -17,8 +16,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();
-        double* wv[3] = {nullptr, nullptr, nullptr};
-        if (no_slip_) { wv[0] = P.field("wall_vx").data(); wv[1] = P.field("wall_vy").data(); wv[2] = P.field("wall_vz").data(); }
+        double* wv[3] = {P.field("wall_vx").data(), P.field("wall_vy").data(), P.field("wall_vz").data()};
         double* s[6] = {P.field(SoilFields::xx).data(), P.field(SoilFields::yy).data(), P.field(SoilFields::zz).data(),
                         P.field(SoilFields::xy).data(), P.dim == 3 ? P.field(SoilFields::xz).data() : nullptr,
                         P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr};
@@ -29,7 +27,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
-          double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, wmax = -1;
+          double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;
           std::uint16_t mat = 0;
           cells.for_each_neighbor(P, w, [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
             if (P.kind[k] != Kind::Soil) return;
@@ -39,6 +37,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             const double rw = P.rho[k] * W;
             sr[0] += rw * dx; sr[1] += rw * dy; sr[2] += rw * dz;
             sv[0] += P.vx[k] * W; sv[1] += P.vy[k] * W; sv[2] += P.vz[k] * W;
+            sd[0] += W * dx; sd[1] += W * dy; sd[2] += W * dz;
             if (W > wmax) { wmax = W; mat = P.material[k]; }
           });
           const double rho0 = scene_.soils[mat].density;
@@ -47,19 +46,29 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           if (sw <= 0) {
             for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
             P.p[w] = 0;
-            if (no_slip_) for (int a = 0; a < 3; ++a) wv[a][w] = 0;
+            for (int a = 0; a < 3; ++a) wv[a][w] = 0;
             continue;
           }
           const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
           for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
           for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
           P.p[w] = -(s[0][w] + s[1][w] + s[2][w]) / 3.0;
-          if (block && block[w] > 0) {  // clamp: the embedded material does not move
-            if (no_slip_) { wv[0][w] = P.vx[w]; wv[1][w] = P.vy[w]; wv[2][w] = P.vz[w]; }
+          const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
+          const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
+          if (block && block[w] > 0 && no_slip_) {  // clamp: the embedded material does not move
+            for (int a = 0; a < 3; ++a) wv[a][w] = vw[a];
           } else if (no_slip_) {
-            wv[0][w] = 2.0 * P.vx[w] - sv[0] / sw;
-            wv[1][w] = 2.0 * P.vy[w] - sv[1] / sw;
-            wv[2][w] = 2.0 * P.vz[w] - sv[2] / sw;
+            for (int a = 0; a < 3; ++a) wv[a][w] = 2.0 * vw[a] - vs[a];
+          } else {
+            // free slip: the soil's tangential velocity, its normal velocity mirrored about the wall's,
+            // u = v_s + 2 ((v_w - v_s).n) n, n the wall normal into the soil (minus the kernel-weighted
+            // mean offset to the soil neighbours); the stress divergence then resists the soil moving into
+            // the wall without shearing it
+            const double len = std::sqrt(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]);
+            double nrm[3] = {0, 0, 0}, vn = 0;
+            if (len > 0)
+              for (int a = 0; a < 3; ++a) { nrm[a] = -sd[a] / len; vn += (vw[a] - vs[a]) * nrm[a]; }
+            for (int a = 0; a < 3; ++a) wv[a][w] = vs[a] + 2.0 * vn * nrm[a];
           }
         }
       },

@@ -5,10 +5,14 @@
 //   sigma_w = ( sum_s sigma_s W_ws - I (g - a_w) . sum_s rho_s r_ws W_ws ) / sum_s W_ws,  r_ws = x_w - x_s
 // No slip: the shear components are copied and the velocity is v_w = 2 v_wall - v~ (Adami eq. 23),
 // so the wall shears the soil. Free slip: the shear components are mirrored (sigma_w,ab = -sigma~_ab,
-// a != b), which gives zero shear traction on the axis-aligned container walls, and the wall takes
-// no part in the velocity gradient. Particles of wall blocks (walls.blocks, e.g. a clamp) keep their
-// own velocity (zero): the material embedded in a block is held, as the clamped particles of Gray,
-// Monaghan & Swift (2001). Wall density is the soil's reference density and its mass
+// a != b), which gives zero shear traction on the axis-aligned container walls, and the wall's ghost
+// velocity keeps the soil's tangential velocity and mirrors its normal velocity about the wall's,
+// v_w = v~ + 2 ((v_wall - v~).n) n, n the wall normal into the soil (the kernel-weighted mean offset
+// to the soil neighbours; the free-slip counterpart of Adami eq. 23 applied to the normal component
+// only), so the soil cannot move into the wall unresisted (in the velocity gradient and the artificial
+// viscosity) while it slides freely along it. With no slip, particles of wall blocks (walls.blocks,
+// e.g. a clamp) keep their own velocity: the material embedded in a block is held, as the clamped
+// particles of Gray, Monaghan & Swift (2001). Wall density is the soil's reference density and its mass
 // rho0 dx^dim, as for the fluid walls.
 #pragma once
 #include <array>

@@ -39,10 +39,19 @@ ContainerSpec parse_box(const JsonFields& f, int dim) {
 SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
   SoilMaterial m;
   m.name = name;
-  m.model = f.choice("model", {"drucker_prager", "linear_elastic"});
+  m.model = f.choice("model", {"drucker_prager", "modified_cam_clay", "linear_elastic"});
   m.density = f.number("density", Range::positive());
-  m.young = f.number("young_modulus", Range::positive());
+  if (!m.is_cam_clay()) m.young = f.number("young_modulus", Range::positive());
   m.poisson = f.number("poisson_ratio", Range::open(-1.0, 0.5));
+  if (m.is_cam_clay()) {
+    m.kappa = f.number("kappa", Range::positive());
+    m.lambda = f.number("lambda", Range::positive());
+    if (!(m.lambda > m.kappa))
+      f.fail("lambda", "must be greater than kappa (" + std::to_string(m.kappa) + "), got " + std::to_string(m.lambda));
+    m.critical_state_slope = f.number("critical_state_slope", Range::open(0, 3));
+    m.void_ratio = f.number("void_ratio", Range::open(0, 20));
+    m.min_pressure = f.number("min_pressure", Range::positive(), 100.0);
+  }
   if (m.model == "drucker_prager") {
     m.cohesion = f.number("cohesion", Range::non_negative(), 0.0);
     m.friction_angle = f.number("friction_angle", Range{0, 90, false, true});
@@ -64,8 +73,12 @@ SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
 
 }  // namespace
 
-double SoilMaterial::wave_speed() const {
-  const double K = young / (3.0 * (1.0 - 2.0 * poisson)), G = young / (2.0 * (1.0 + poisson));
+double SoilMaterial::wave_speed(double p) const {
+  double K = young / (3.0 * (1.0 - 2.0 * poisson)), G = young / (2.0 * (1.0 + poisson));
+  if (is_cam_clay()) {  // K = v max(p', p'_min)/kappa, constant Poisson ratio
+    K = (1.0 + void_ratio) * std::max(p, min_pressure) / kappa;
+    G = 1.5 * K * (1.0 - 2.0 * poisson) / (1.0 + poisson);
+  }
   return std::sqrt((K + 4.0 * G / 3.0) / density);
 }
 
@@ -109,6 +122,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   s.viscous_factor = t.number("viscous_factor", Range{0, 0.5, true, false}, 0.125);
   s.max_steps = t.integer("max_steps", 1, 2000000000L, 100000000L);
   s.gravity_ramp = t.number("gravity_ramp", Range::non_negative(), 0.0);
+  s.gravity_ramp_from = t.number("gravity_ramp_from", Range{0, 1, false, true}, 0.0);
   t.reject_unknown();
 
   if (auto o = top.optional_object("output")) {
@@ -125,7 +139,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   auto mats = top.object("materials");
   for (const auto& name : mats.keys()) {
     auto m = mats.object(name);
-    const std::string model = m.choice("model", {"tait_fluid", "drucker_prager", "linear_elastic"});
+    const std::string model = m.choice("model", {"tait_fluid", "drucker_prager", "modified_cam_clay", "linear_elastic"});
     if (model == "tait_fluid") s.materials.push_back(parse_fluid(m, name));
     else s.soils.push_back(parse_soil(m, name));
   }
@@ -135,9 +149,10 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   for (auto& b : top.array_of_objects("bodies")) {
     BodySpec body;
     body.material = b.text("material");
-    bool is_fluid = false, is_soil = false;
+    bool is_fluid = false, is_soil = false, is_cam_clay = false;
     for (const auto& m : s.materials) is_fluid = is_fluid || m.name == body.material;
-    for (const auto& m : s.soils) is_soil = is_soil || m.name == body.material;
+    for (const auto& m : s.soils)
+      if (m.name == body.material) { is_soil = true; is_cam_clay = m.is_cam_clay(); }
     if (!is_fluid && !is_soil) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
     b.choice("shape", {"box"});
     body.lo = b.vector("min", d);
@@ -145,8 +160,16 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     for (int a = 0; a < d; ++a)
       if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
     body.initial = is_fluid ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
-                            : b.choice("initial", {"rest", "geostatic"}, "rest");
+                            : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");
     if (is_soil && b.has("k0")) body.k0 = b.number("k0", Range::open(0, 10));
+    if (body.initial == "isotropic") body.pressure = b.number("pressure", Range::positive());
+    if (is_cam_clay) {
+      // Modified Cam Clay needs p' > 0 at start: its stiffness and yield locus scale with p'
+      if (body.initial == "rest")
+        b.fail("initial", "must be \"geostatic\" or \"isotropic\" for the modified_cam_clay material \"" + body.material +
+                              "\": the model needs an initial mean effective stress p' > 0, and \"rest\" gives p' = 0");
+      body.ocr = b.number("ocr", Range{1, 1000, false, false}, 1.0);
+    }
     body.velocity = b.vector("velocity", d, {0, 0, 0});
     body.fixed = b.boolean("fixed", false);
     if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
@@ -223,6 +246,13 @@ void validate_scene(const Scene& s) {
         if (s.gravity[a] != 0 || s.gravity[s.dim - 1] > 0)
           fail("bodies[" + std::to_string(b) + "].initial",
                std::string("\"geostatic\" needs gravity pointing along -") + (s.dim == 2 ? "y" : "z"));
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (const auto& m : s.soils)
+      if (m.name == s.bodies[b].material && m.is_cam_clay() && s.bodies[b].initial == "geostatic" &&
+          !(s.gravity[s.dim - 1] * s.initial_gravity_factor() < 0))
+        fail("bodies[" + std::to_string(b) + "].initial",
+             "\"geostatic\" without gravity at t = 0 gives p' = 0, but the modified_cam_clay material \"" + m.name +
+                 "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
   if (s.has_fluid() && s.has_soil() && s.has_walls())
     fail("materials", "fluid and soil in one scene with walls is not supported yet (two-phase coupling is a later module)");
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")

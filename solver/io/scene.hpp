@@ -24,24 +24,32 @@ struct FluidMaterial {
   double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
 };
 
-// Elasto-plastic soil (Drucker-Prager, Bui et al. 2008). Angles in degrees as written in the
-// scene; the stress is integrated with the Jaumann rate and its pressure comes from the
-// constitutive model (no equation of state).
+// Elasto-plastic soil (Drucker-Prager, Bui et al. 2008; Modified Cam Clay, Roscoe & Burland 1968).
+// Angles in degrees as written in the scene; the stress is integrated with the Jaumann rate and its
+// pressure comes from the constitutive model (no equation of state).
 struct SoilMaterial {
   std::string name;
-  std::string model = "drucker_prager";  // drucker_prager | linear_elastic (no yield)
+  std::string model = "drucker_prager";  // drucker_prager | modified_cam_clay | linear_elastic (no yield)
   double density = 0;                 // [kg/m^3]
   double young = 0;                   // Young's modulus E [Pa]
   double poisson = 0;                 // Poisson ratio nu, in (-1, 0.5)
   double cohesion = 0;                // Mohr-Coulomb c [Pa]
   double friction_angle = 0;          // Mohr-Coulomb phi [deg], in [0, 90)
   double dilatancy_angle = 0;         // psi [deg], in [0, phi]
+  // modified_cam_clay (soil/modified_cam_clay.hpp): pressure-dependent elasticity, no young_modulus
+  double lambda = 0;                  // slope of the normal compression line in v - ln p'
+  double kappa = 0;                   // slope of the unloading-reloading lines, 0 < kappa < lambda
+  double critical_state_slope = 0;    // M, in (0, 3)
+  double void_ratio = 0;              // e > 0 (v = 1 + e held constant: small-strain form)
+  double min_pressure = 100;          // p'_min [Pa]: floor on p' in the moduli (free surfaces)
+  bool is_cam_clay() const { return model == "modified_cam_clay"; }
   double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
   double artificial_viscosity_beta = 0.0;
   double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
   double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
-  // P-wave speed sqrt((K + 4G/3)/rho): the time step's acoustic limit
-  double wave_speed() const;
+  // P-wave speed sqrt((K + 4G/3)/rho): the time step's acoustic limit. Modified Cam Clay: at
+  // the mean effective stress p' (its moduli grow with p'); the other models ignore p'.
+  double wave_speed(double p = 0) const;
 };
 
 struct BodySpec {
@@ -49,7 +57,10 @@ struct BodySpec {
   std::array<double, 3> lo{}, hi{};
   std::string initial = "rest";       // rest (uniform rho0) | hydrostatic (fluid: Tait hydrostatic state)
                                       // | geostatic (soil: sigma_v = rho g depth, sigma_h = K0 sigma_v)
+                                      // | isotropic (soil: sigma = -pressure I)
   double k0 = -1;                     // geostatic K0; < 0: nu/(1 - nu) (elastic, laterally confined)
+  double pressure = 0;                // isotropic: initial mean effective stress p' [Pa]
+  double ocr = 1;                     // modified_cam_clay: p_c = OCR x (p_c of the yield locus through the initial stress)
   std::array<double, 3> velocity{};
   bool fixed = false;                 // held in place (velocity zero) but otherwise part of the material,
                                       // e.g. the clamped root of a plate (Gray, Monaghan & Swift 2001)
@@ -80,6 +91,9 @@ struct Scene {
   Box domain;
   std::array<double, 3> gravity{};
   double gravity_ramp = 0;            // s; gravity grows smoothly over this time (Adami et al. 2012, eq. 33)
+  double gravity_ramp_from = 0;       // fraction of the gravity at t = 0 when ramped (in [0, 1))
+  // Gravity factor at t = 0: the initial hydrostatic/geostatic states are computed with it.
+  double initial_gravity_factor() const { return gravity_ramp > 0 ? gravity_ramp_from : 1.0; }
   std::array<double, 3> body_force{}; // extra acceleration on fluid [m/s^2]
   double t_end = 0;
   double cfl = 0.2, force_factor = 0.25, viscous_factor = 0.125;

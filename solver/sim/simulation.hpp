@@ -40,7 +40,8 @@ class Simulation {
   std::size_t soil_count() const { return n_soil_; }
   // material (moving) particles: fluid + soil; walls excluded
   std::size_t moving_count() const { return n_fluid_ + n_soil_; }
-  // Gravity at time t, ramped smoothly from zero over scene.gravity_ramp (Adami et al. 2012, eq. 33).
+  // Gravity at time t, ramped smoothly from gravity_ramp_from x g over scene.gravity_ramp (Adami et al.
+  // 2012, eq. 33, there from zero).
   std::array<double, 3> gravity_at(double t) const;
 
  private:

@@ -11,7 +11,11 @@ struct SoilFields {
   static constexpr const char* xy = "stress_xy";
   static constexpr const char* xz = "stress_xz";
   static constexpr const char* yz = "stress_yz";
-  static constexpr const char* plastic_strain = "plastic_strain";
+  static constexpr const char* plastic_strain = "plastic_strain";  // equivalent deviatoric, accumulated
+  // Modified Cam Clay only (allocated when a scene declares it):
+  static constexpr const char* preconsolidation = "preconsolidation_pressure";   // p_c [Pa]
+  static constexpr const char* plastic_volumetric_strain = "plastic_volumetric_strain";  // tr(eps_p), tension positive
+  static constexpr const char* wave_speed = "wave_speed";  // local P-wave speed [m/s] (moduli grow with p')
 };
 
 }  // namespace geosph

@@ -34,10 +34,19 @@ struct StressView {
 
 }  // namespace
 
-SoilForces::SoilForces(const Scene& scene) : scene_(scene), free_slip_walls_(scene.walls.slip == "free_slip") {
+SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
   for (const auto& m : scene.soils) {
-    models_.emplace_back(soil::DruckerPragerParams{m.young, m.poisson, m.cohesion, m.friction_angle * kDeg,
-                                                   m.dilatancy_angle * kDeg});
+    models_.emplace_back();
+    cam_clay_.emplace_back();
+    if (m.is_cam_clay()) {
+      cam_clay_.back().emplace(soil::ModifiedCamClayParams{m.lambda, m.kappa, m.critical_state_slope, m.poisson,
+                                                           1.0 + m.void_ratio, m.min_pressure});
+      has_cam_clay_ = true;
+    } else {
+      models_.back().emplace(soil::DruckerPragerParams{m.young, m.poisson, m.cohesion, m.friction_angle * kDeg,
+                                                       m.dilatancy_angle * kDeg});
+      max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
+    }
     elastic_only_.push_back(m.model == "linear_elastic");
   }
 }
@@ -46,13 +55,29 @@ void SoilForces::allocate(Particles& P) const {
   for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::plastic_strain})
     P.field(f);
   if (P.dim == 3) { P.field(SoilFields::xz); P.field(SoilFields::yz); }
+  if (has_cam_clay_) {
+    for (const char* f : {SoilFields::preconsolidation, SoilFields::plastic_volumetric_strain, SoilFields::wave_speed})
+      P.field(f);
+    update_wave_speeds(P);
+  }
 }
 
-double SoilForces::max_wave_speed() const {
-  double c = 0;
-  for (const auto& m : scene_.soils) c = std::max(c, m.wave_speed());
-  return c;
+void SoilForces::update_wave_speeds(Particles& P) const {
+  double* c = P.field(SoilFields::wave_speed).data();
+  double cmax = 0;
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static) reduction(max : cmax)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    c[i] = scene_.soils[P.material[i]].wave_speed(P.p[i]);
+    cmax = std::max(cmax, c[i]);
+  }
+  for (const auto& m : scene_.soils)
+    if (!m.is_cam_clay()) cmax = std::max(cmax, m.wave_speed());
+  max_wave_speed_ = cmax;
 }
+
+double SoilForces::max_wave_speed() const { return max_wave_speed_; }
 
 void SoilForces::update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const {
   std::visit([&](const auto& k) { update_stress_with(k, P, cells, dt, step, time); },
@@ -73,7 +98,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
   const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
   const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
-  long bad = -1;
+  double* pc = has_cam_clay_ ? P.field(SoilFields::preconsolidation).data() : nullptr;
+  double* eps_v = has_cam_clay_ ? P.field(SoilFields::plastic_volumetric_strain).data() : nullptr;
+  long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
   const int dim = scene_.dim;
 #pragma omp parallel for schedule(dynamic, 256)
@@ -91,9 +118,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       // continuity with the wall's own (prescribed) velocity
       drho += P.m[j] * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
       double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
-      if (kj == Kind::DummyWall) {
-        if (free_slip_walls_) return;  // free slip: the wall does not shear the soil
-        if (wvx) { vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j]; }  // no slip: 2 v_wall - v_soil
+      if (kj == Kind::DummyWall && wvx) {  // the wall's ghost velocity (boundary/soil_wall.cpp)
+        vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j];
       }
       const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
       for (int a = 0; a < 3; ++a)
@@ -126,31 +152,53 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         de(a, b) = 0.5 * dt * (L[a][b] + L[b][a]);
         dw(a, b) = 0.5 * dt * (L[a][b] - L[b][a]);
       }
-    const auto& model = models_[P.material[i]];
-    soil::DruckerPrager::Result r;
-    if (elastic_only_[P.material[i]]) {
-      r.stress = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + model.elastic_increment(de);
-      r.equivalent_plastic_strain_increment = 0;
+    const auto mat = P.material[i];
+    Eigen::Matrix3d stress;
+    double eq_plastic = 0;
+    if (const auto& mcc = cam_clay_[mat]) {
+      const auto r = mcc->update(sv.get(i), pc[i], de, dw);
+      if (!r.converged) {
+#pragma omp critical
+        if (unconverged < 0 || static_cast<long>(i) < unconverged) unconverged = static_cast<long>(i);
+        continue;
+      }
+      stress = r.stress;
+      eq_plastic = r.equivalent_plastic_strain_increment;
+      pc[i] = r.preconsolidation;
+      eps_v[i] += r.volumetric_plastic_strain_increment;
+    } else if (elastic_only_[mat]) {
+      stress = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + models_[mat]->elastic_increment(de);
     } else {
-      r = model.update(sv.get(i), de, dw);
+      const auto r = models_[mat]->update(sv.get(i), de, dw);
+      stress = r.stress;
+      eq_plastic = r.equivalent_plastic_strain_increment;
     }
-    if (!r.stress.allFinite()) {
+    if (!stress.allFinite()) {
 #pragma omp critical
       if (bad < 0 || static_cast<long>(i) < bad) bad = static_cast<long>(i);
       continue;
     }
-    sv.set(i, r.stress);
-    eps_p[i] += r.equivalent_plastic_strain_increment;
-    P.p[i] = -r.stress.trace() / 3.0;
+    sv.set(i, stress);
+    eps_p[i] += eq_plastic;
+    P.p[i] = -stress.trace() / 3.0;
   }
-  if (bad >= 0) {
-    const auto i = static_cast<std::size_t>(bad);
+  const auto diagnose = [&](long which, const std::string& what) {
+    const auto i = static_cast<std::size_t>(which);
     Diagnosis d;
     d.step = step; d.time = time; d.particle_id = P.id[i];
     d.x = P.x[i]; d.y = P.y[i]; d.z = P.z[i];
-    d.quantity = "soil stress is not finite after the Jaumann update and return mapping";
+    d.quantity = what;
     throw InstabilityError(d);
+  };
+  if (bad >= 0) diagnose(bad, "soil stress is not finite after the Jaumann update and return mapping");
+  if (unconverged >= 0) {
+    const Eigen::Matrix3d s = sv.get(static_cast<std::size_t>(unconverged));
+    diagnose(unconverged, "the Modified Cam Clay return mapping did not converge (start of step p' = " +
+                              std::to_string(soil::ModifiedCamClay::mean_effective_stress(s)) + " Pa, q = " +
+                              std::to_string(soil::ModifiedCamClay::deviator_stress(s)) + " Pa, p_c = " +
+                              std::to_string(pc[unconverged]) + " Pa)");
   }
+  if (has_cam_clay_) update_wave_speeds(P);
 }
 
 void SoilForces::prepare_pair_terms(Particles& P) const {
@@ -193,12 +241,14 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
   const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
   const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
+  const double* cw = has_cam_clay_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Soil) continue;
     const SoilMaterial& mi = scene_.soils[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
-    const double alpha_c = mi.artificial_viscosity * mi.wave_speed(), beta = mi.artificial_viscosity_beta;
+    const double ci = cw ? cw[i] : mi.wave_speed();
+    const double alpha = mi.artificial_viscosity, beta = mi.artificial_viscosity_beta;
     const double n_as = mi.artificial_stress_exponent;
     const bool n_is_4 = n_as == 4.0;
     const bool use_as = mi.artificial_stress > 0;
@@ -222,13 +272,14 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         for (int c = 0; c < 6; ++c) T[c] += f * (Ri[c] + Rj[c]);
       }
       const bool wall = kj == Kind::DummyWall;
-      if (!(wall && free_slip_walls_)) {
+      {
         double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
         if (wall && wvx) { ux = vxi - wvx[j]; uy = vyi - wvy[j]; uz = vzi - wvz[j]; }
         const double vr = ux * dx + uy * dy + uz * dz;
         if (vr < 0) {
           const double mu = h * vr / (r2 + eta2);
-          const double Pi = (-alpha_c * mu + beta * mu * mu) / (0.5 * (rhoi + P.rho[j]));
+          const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
+          const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + P.rho[j]));
           T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
         }
       }

@@ -5,11 +5,14 @@
 //                      exact for linear velocity fields also at free surfaces (Bonet & Lok 1999,
 //                      Comput. Methods Appl. Mech. Engrg. 180, eq. 22; numerics.kernel_gradient_correction)
 //   continuity         d rho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij
-//   stress             Jaumann rate + Drucker-Prager return mapping (soil/drucker_prager.hpp)
+//   stress             Jaumann rate + Drucker-Prager (soil/drucker_prager.hpp) or Modified Cam Clay
+//                      (soil/modified_cam_clay.hpp) return mapping
 //   momentum           dv_i/dt = sum_j m_j (S_i + S_j + (R_i + R_j) f_ij^n - Pi_ij I) . grad_i W_ij + g,
 //                      S = sigma / rho^2                                           (Bui 2008, eq. 29)
-//   artificial viscosity Pi_ij = (-alpha c mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
+//   artificial viscosity Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
 //                                                                                  (Monaghan 1992, eq. 4.2)
+//                      c_ij = (c_i + c_j)/2, the local P-wave speeds (constant for Drucker-Prager;
+//                      growing with p' for Modified Cam Clay)
 //   artificial stress  R = -epsilon sigma'_aa / rho^2 on tensile principal stresses, rotated back;
 //                      f_ij = W(r_ij) / W(dx)            (Gray, Monaghan & Swift 2001, eqs. 3.1-3.6)
 // Pressure p = -tr(sigma)/3 is an output of the constitutive model, not an equation of state.
@@ -20,7 +23,10 @@
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "io/scene.hpp"
+#include <optional>
+
 #include "soil/drucker_prager.hpp"
+#include "soil/modified_cam_clay.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph {
@@ -29,11 +35,14 @@ class SoilForces {
  public:
   explicit SoilForces(const Scene& scene);
   void allocate(Particles& P) const;
+  // Largest P-wave speed of the soil now (Modified Cam Clay: from the current stresses, updated with
+  // every stress update); the time step's acoustic limit.
   double max_wave_speed() const;
   double density(std::size_t material) const { return scene_.soils[material].density; }
 
   // At x^{n+1} with v^{n+1/2}: density rate and the stress update over dt (velocity gradient,
-  // Jaumann rotation, return mapping). Throws InstabilityError if a stress becomes non-finite.
+  // Jaumann rotation, return mapping). Throws InstabilityError if a stress becomes non-finite or a
+  // Modified Cam Clay return does not converge.
   void update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const;
   // Accelerations of soil particles (after the wall particles carry their extrapolated stress).
   void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
@@ -46,10 +55,15 @@ class SoilForces {
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   void prepare_pair_terms(Particles& P) const;  // S = sigma/rho^2 and artificial stress R per particle
 
+  // Local wave speeds of the Modified Cam Clay particles (field SoilFields::wave_speed) and their maximum.
+  void update_wave_speeds(Particles& P) const;
+
   const Scene& scene_;
-  std::vector<soil::DruckerPrager> models_;
+  std::vector<std::optional<soil::DruckerPrager>> models_;      // drucker_prager and linear_elastic
+  std::vector<std::optional<soil::ModifiedCamClay>> cam_clay_;  // modified_cam_clay
   std::vector<char> elastic_only_;  // linear_elastic materials: Jaumann rotation + elastic increment only
-  bool free_slip_walls_;
+  bool has_cam_clay_ = false;
+  mutable double max_wave_speed_ = 0;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
 };
 

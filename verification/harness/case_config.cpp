@@ -47,7 +47,8 @@ CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
     t.reject_unknown();
   }
   c.spec = j;
-  c.scene_json = read_json(c.dir / "scene.json");
+  // element (material-point) tests have no scene
+  if (std::filesystem::exists(c.dir / "scene.json")) c.scene_json = read_json(c.dir / "scene.json");
   return c;
 }
 
@@ -85,6 +86,7 @@ bool case_has_level(const CaseContext& ctx, const std::string& name, const std::
 }
 
 Scene CaseConfig::scene(double dx) const {
+  if (scene_json.is_null()) throw InputError((dir / "scene.json").string() + ": cannot open (case '" + name + "' has no scene)");
   nlohmann::json j = scene_json;
   j["dx"] = dx;
   return parse_scene(j, (dir / "scene.json").string());

@@ -1,7 +1,10 @@
 #include "harness/catalogue.hpp"
 
+#include "cases/cam_clay_k0_column/cam_clay_k0_column.hpp"
+#include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
 #include "cases/dam_break_2d/dam_break_2d.hpp"
 #include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
+#include "cases/granular_collapse_scaling/granular_collapse_scaling.hpp"
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 #include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
@@ -15,8 +18,12 @@ const std::vector<CaseEntry>& catalogue() {
       {"poiseuille_flow", run_poiseuille_flow},
       {"dam_break_2d", run_dam_break_2d},
       {"granular_collapse_bui", run_granular_collapse_bui},
+      {"granular_collapse_cam_clay", run_granular_collapse_cam_clay},
+      {"granular_collapse_scaling", run_granular_collapse_scaling},
       {"oscillating_plate", run_oscillating_plate},
       {"strip_footing", run_strip_footing},
+      {"cam_clay_triaxial", run_cam_clay_triaxial},
+      {"cam_clay_k0_column", run_cam_clay_k0_column},
   };
   return cases;
 }

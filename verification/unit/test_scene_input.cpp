@@ -182,3 +182,57 @@ TEST(SceneInput, SoilMaterialRanges) {
   j["walls"]["type"] = "repulsive";
   expect_error(j, "walls.type", "soil needs dummy walls");
 }
+
+// Modified Cam Clay: lambda <= kappa, non-positive M, p' <= 0 at start.
+namespace {
+json cam_clay_scene() {
+  auto j = geosph::test::soil_column_scene();
+  j["materials"] = json::parse(R"({"clay": {"model": "modified_cam_clay", "density": 1800, "lambda": 0.093,
+      "kappa": 0.035, "critical_state_slope": 0.95, "poisson_ratio": 0.3, "void_ratio": 0.6}})");
+  j["bodies"][0]["material"] = "clay";
+  return j;
+}
+}  // namespace
+
+TEST(SceneInput, CamClayMaterialRanges) {
+  const Scene s = parse_scene(cam_clay_scene(), "ok.json");
+  EXPECT_TRUE(s.soils.front().is_cam_clay());
+  EXPECT_DOUBLE_EQ(s.bodies.front().ocr, 1.0);
+  auto j = cam_clay_scene();
+  j["materials"]["clay"]["lambda"] = 0.035;
+  expect_error(j, "materials.clay.lambda", "must be greater than kappa");
+  j["materials"]["clay"]["lambda"] = 0.02;
+  expect_error(j, "materials.clay.lambda", "must be greater than kappa");
+  j = cam_clay_scene();
+  j["materials"]["clay"]["kappa"] = 0;
+  expect_error(j, "materials.clay.kappa", "> 0");
+  j = cam_clay_scene();
+  j["materials"]["clay"]["critical_state_slope"] = 0;
+  expect_error(j, "materials.clay.critical_state_slope", "(0, 3)");
+  j["materials"]["clay"]["critical_state_slope"] = -1.0;
+  expect_error(j, "materials.clay.critical_state_slope", "(0, 3)");
+  j = cam_clay_scene();
+  j["materials"]["clay"]["void_ratio"] = 0;
+  expect_error(j, "materials.clay.void_ratio", "(0, 20)");
+  j = cam_clay_scene();
+  j["materials"]["clay"]["young_modulus"] = 1e6;  // pressure-dependent elasticity: no Young's modulus
+  expect_error(j, "materials.clay.young_modulus", "is not a known field");
+  // p' <= 0 at start
+  j = cam_clay_scene();
+  j["bodies"][0]["initial"] = "rest";
+  expect_error(j, "bodies[0].initial", "needs an initial mean effective stress p' > 0");
+  j = cam_clay_scene();
+  j["gravity"] = {0, 0};
+  expect_error(j, "bodies[0].initial", "needs p' > 0 at start");
+  j = cam_clay_scene();
+  j["bodies"][0]["initial"] = "isotropic";
+  j["bodies"][0]["pressure"] = 0;
+  expect_error(j, "bodies[0].pressure", "> 0");
+  j = cam_clay_scene();
+  j["bodies"][0]["ocr"] = 0.5;
+  expect_error(j, "bodies[0].ocr", "[1, 1000]");
+  // OCR is a Cam Clay field only
+  j = soil_scene();
+  j["bodies"][0]["ocr"] = 2;
+  expect_error(j, "bodies[0].ocr", "is not a known field");
+}

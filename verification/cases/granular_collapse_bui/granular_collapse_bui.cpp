@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "harness/catalogue.hpp"
+#include "harness/deposit.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -19,35 +20,6 @@
 namespace geosph::verify {
 
 namespace {
-
-struct Profile {
-  std::vector<double> x, h;  // bin centres and surface heights
-};
-
-// Free surface: the highest soil particle's top (centre + dx/2) in bins of width dx along x.
-Profile surface_profile(const Particles& P, double x0, double floor_y, double dx) {
-  double xmax = x0;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::Soil) xmax = std::max(xmax, P.x[i]);
-  const auto nb = static_cast<std::size_t>(std::ceil((xmax - x0) / dx)) + 1;
-  Profile pr;
-  pr.h.assign(nb, 0.0);
-  for (std::size_t b = 0; b < nb; ++b) pr.x.push_back(x0 + (b + 0.5) * dx);
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] != Kind::Soil) continue;
-    const auto b = std::min(nb - 1, static_cast<std::size_t>(std::max(0.0, (P.x[i] - x0) / dx)));
-    pr.h[b] = std::max(pr.h[b], P.y[i] + 0.5 * dx - floor_y);
-  }
-  return pr;
-}
-
-// Run-out: the front of the soil on the floor (particles within 2 dx of it), at the particle's edge.
-double runout(const Particles& P, double floor_y, double dx) {
-  double xmax = -1e300;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::Soil && P.y[i] < floor_y + 2 * dx) xmax = std::max(xmax, P.x[i]);
-  return xmax + 0.5 * dx;
-}
 
 // Failure line in the initial configuration: for each initial column of particles (x bins of width
 // dx), the top of the static wedge = highest initial y among particles displaced less than
@@ -91,6 +63,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   Scene scene = cfg.scene(spacing);
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
+  rec.scored = cfg.spec.value("scored", true);  // the Cam Clay variant is a study (no measured parameters)
   const auto& col = scene.bodies.front();
   const double dx = scene.dx, floor_y = col.lo[1], H0 = col.hi[1] - col.lo[1];
 
@@ -108,7 +81,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     if (s.time() < next) return;
     next += 0.01;
     front.x.push_back(s.time());
-    front.y.push_back(runout(s.particles(), floor_y, dx));
+    front.y.push_back(runout_front(s.particles(), floor_y, dx));
   }, ctx.progress);
   rec.series.push_back(front);
 
@@ -128,7 +101,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
                         exp_line.column("x"), exp_line.column("y")});
   rec.extra["failure_angle_deg_reference"] = header_number(exp, "failure_angle_deg");
 
-  const double sph_runout = ok ? runout(P, floor_y, dx) - col.lo[0] : NAN;
+  const double sph_runout = ok ? runout_front(P, floor_y, dx) - col.lo[0] : NAN;
   double sph_height = 0;
   for (double h : pr.h) sph_height = std::max(sph_height, h);
   rec.extra["runout_m"] = sph_runout;
@@ -184,5 +157,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 }  // namespace
 
 std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) { return run_each_spacing(ctx, "granular_collapse_bui", run_at); }
+
+// The same experiment with the Modified Cam Clay column (verification/cases/granular_collapse_cam_clay).
+std::vector<Record> run_granular_collapse_cam_clay(const CaseContext& ctx) {
+  return run_each_spacing(ctx, "granular_collapse_cam_clay", run_at);
+}
 
 }  // namespace geosph::verify

@@ -6,4 +6,5 @@
 
 namespace geosph::verify {
 std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx);
+std::vector<Record> run_granular_collapse_cam_clay(const CaseContext& ctx);
 }

@@ -1,0 +1,38 @@
+#include "harness/deposit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geosph::verify {
+
+Profile surface_profile(const Particles& P, double x0, double floor_y, double dx) {
+  double xmax = x0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) xmax = std::max(xmax, P.x[i]);
+  const auto nb = static_cast<std::size_t>(std::ceil((xmax - x0) / dx)) + 1;
+  Profile pr;
+  pr.h.assign(nb, 0.0);
+  for (std::size_t b = 0; b < nb; ++b) pr.x.push_back(x0 + (b + 0.5) * dx);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const auto b = std::min(nb - 1, static_cast<std::size_t>(std::max(0.0, (P.x[i] - x0) / dx)));
+    pr.h[b] = std::max(pr.h[b], P.y[i] + 0.5 * dx - floor_y);
+  }
+  return pr;
+}
+
+double runout_front(const Particles& P, double floor_y, double dx) {
+  double xmax = -1e300;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil && P.y[i] < floor_y + 2 * dx) xmax = std::max(xmax, P.x[i]);
+  return xmax + 0.5 * dx;
+}
+
+double max_soil_speed(const Particles& P) {
+  double v2 = 0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) v2 = std::max(v2, P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
+  return std::sqrt(v2);
+}
+
+}  // namespace geosph::verify
