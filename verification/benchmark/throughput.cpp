@@ -2,6 +2,7 @@
 // wall-clock time at three sizes and 1 or 2 OpenMP threads, for
 //   DamBreak2D         the 2D dam break (fluid; ~10k, ~40k, ~160k particles)
 //   GranularCollapse2D the aluminium-bar column collapse (Drucker-Prager soil; ~5k, ~20k, ~80k)
+//   GranularCollapseCamClay2D the same column as Modified Cam Clay (implicit return; same sizes)
 //
 // Each scene is the catalogue one with only dx changed, so that its first body (the water column,
 // the soil column) holds about N particles: dx = sqrt(body area / N). Building the Simulation (particles, cell
@@ -75,7 +76,8 @@ void register_all() {
   struct Case { const char* name; const char* scene; std::vector<Size> sizes; };
   const std::vector<Case> cases = {
       {"DamBreak2D/step", "dam_break_2d", {{10'000, 800}, {40'000, 200}, {160'000, 50}}},
-      {"GranularCollapse2D/step", "granular_collapse_bui", {{5'000, 800}, {20'000, 200}, {80'000, 50}}}};
+      {"GranularCollapse2D/step", "granular_collapse_bui", {{5'000, 800}, {20'000, 200}, {80'000, 50}}},
+      {"GranularCollapseCamClay2D/step", "granular_collapse_cam_clay", {{5'000, 800}, {20'000, 200}, {80'000, 50}}}};
   for (const auto& c : cases)
   for (const Size sz : c.sizes)
     for (const long threads : {1L, 2L})

@@ -1,5 +1,7 @@
 #include "harness/catalogue.hpp"
 
+#include <limits>
+
 #include "cases/cam_clay_k0_column/cam_clay_k0_column.hpp"
 #include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
 #include "cases/dam_break_2d/dam_break_2d.hpp"
@@ -35,6 +37,11 @@ Record start_record(const CaseConfig& cfg, const CaseContext& ctx) {
   r.level = ctx.level;
   r.reference = cfg.reference;
   return r;
+}
+
+void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name, double value, bool ok) {
+  const auto& tol = cfg.tolerance(name);
+  rec.add_metric(name, ok ? value : std::numeric_limits<double>::quiet_NaN(), tol.value, tol.why);
 }
 
 }  // namespace geosph::verify

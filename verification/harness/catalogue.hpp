@@ -19,5 +19,7 @@ const std::vector<CaseEntry>& catalogue();
 
 // Fills the fields every record of a case shares (name, title, level, reference).
 Record start_record(const CaseConfig& cfg, const CaseContext& ctx);
+// Adds metric `name` with the tolerance and reason from case.json; NaN (failing) unless `ok`.
+void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name, double value, bool ok = true);
 
 }  // namespace geosph::verify

@@ -7,6 +7,8 @@
 // (E = 10 MPa, nu = 0.3, c = 10 kPa, phi = 30 deg, psi = 10 deg).
 #include <gtest/gtest.h>
 
+#include "test_validation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -305,13 +307,7 @@ TEST(DruckerPrager, AssociatedReturnIsTheClosestPointInTheEnergyNorm) {
 // Jaumann rotation
 
 namespace {
-Matrix3d rotation_z(double theta) {
-  Matrix3d R = Matrix3d::Identity();
-  R(0, 0) = R(1, 1) = std::cos(theta);
-  R(1, 0) = std::sin(theta);
-  R(0, 1) = -std::sin(theta);
-  return R;
-}
+using geosph::test::rotation_z;
 // spin increment of the rigid rotation v = Omega e_z x r over dt (theta = Omega dt), built from the
 // velocity gradient exactly as the SPH caller does: W = dt (L - L^T)/2, L_ab = dv_a/dx_b
 Matrix3d spin_of_rotation(double theta) {
@@ -531,17 +527,7 @@ TEST(DruckerPrager, SimpleShearWithSpinMatchesTheRateEquations) {
 // Parameter validation
 
 namespace {
-void expect_rejects(DruckerPragerParams p, const std::string& field) {
-  try {
-    geosph::soil::validate(p);
-    ADD_FAILURE() << field << ": accepted";
-  } catch (const std::invalid_argument& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(field), std::string::npos) << msg;
-    EXPECT_NE(msg.find("must be"), std::string::npos) << msg;
-  }
-  EXPECT_THROW(DruckerPrager{p}, std::invalid_argument);
-}
+void expect_rejects(const DruckerPragerParams& p, const std::string& field) { geosph::test::expect_rejects<DruckerPrager>(p, field); }
 }  // namespace
 
 TEST(DruckerPrager, ParameterValidationNamesTheField) {

@@ -15,6 +15,8 @@
 //            made-up soft clay with a large lambda/kappa ratio (strong hardening and softening).
 #include <gtest/gtest.h>
 
+#include "test_validation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -86,16 +88,7 @@ Matrix3d stress_pq(std::mt19937_64& rng, double p, double q) {
 // Parameter validation
 
 namespace {
-void expect_rejects(ModifiedCamClayParams p, const std::string& field) {
-  try {
-    geosph::soil::validate(p);
-    ADD_FAILURE() << field << ": accepted";
-  } catch (const std::invalid_argument& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind(field + " must be", 0), 0u) << msg;  // names the field first
-  }
-  EXPECT_THROW(ModifiedCamClay{p}, std::invalid_argument);
-}
+void expect_rejects(const ModifiedCamClayParams& p, const std::string& field) { geosph::test::expect_rejects<ModifiedCamClay>(p, field); }
 }  // namespace
 
 TEST(ModifiedCamClay, ParameterValidationNamesTheField) {
@@ -674,13 +667,7 @@ Matrix3d spin_of_rotation(double theta) {
   L(1, 0) = theta;
   return 0.5 * (L - L.transpose());
 }
-Matrix3d rotation_z(double theta) {
-  Matrix3d R = Matrix3d::Identity();
-  R(0, 0) = R(1, 1) = std::cos(theta);
-  R(1, 0) = std::sin(theta);
-  R(0, 1) = -std::sin(theta);
-  return R;
-}
+using geosph::test::rotation_z;
 }  // namespace
 
 TEST(ModifiedCamClay, PureSpinRotatesWithoutChangingInvariants) {

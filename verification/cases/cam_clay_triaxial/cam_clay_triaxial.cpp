@@ -83,10 +83,8 @@ Record drained(const CaseConfig& cfg, const CaseContext& ctx, const Setup& s, do
   for (const auto& [metric, value] :
        std::vector<std::pair<std::string, double>>{{"q_rel_l2", relative_l2(run.q, q_ref)},
                                                    {"volumetric_strain_rel_l2", relative_l2(run.eps_v, ev_ref)},
-                                                   {"critical_state_p_rel_error", std::abs(run.p.back() - p_cs) / p_cs}}) {
-    const auto& tol = cfg.tolerance(metric);
-    rec.add_metric(metric, ok ? value : NAN, tol.value, tol.why);
-  }
+                                                   {"critical_state_p_rel_error", std::abs(run.p.back() - p_cs) / p_cs}})
+    add_case_metric(rec, cfg, metric, value, ok);
   return rec;
 }
 
@@ -125,12 +123,9 @@ Record undrained(const CaseConfig& cfg, const CaseContext& ctx, const Setup& s, 
   rec.extra["end_p_pa"] = run.p.back();
   rec.extra["end_q_pa"] = run.q.back();
   const bool ok = run.converged;
-  const auto& tp = cfg.tolerance("undrained_path_rel_error");
-  rec.add_metric("undrained_path_rel_error", ok ? path_err : NAN, tp.value, tp.why);
-  const auto& tf = cfg.tolerance("undrained_failure_rel_error");
-  rec.add_metric("undrained_failure_rel_error",
-                 ok ? std::abs(run.p.back() - fail.p) / fail.p + std::abs(run.q.back() - fail.q) / fail.q : NAN,
-                 tf.value, tf.why);
+  add_case_metric(rec, cfg, "undrained_path_rel_error", path_err, ok);
+  add_case_metric(rec, cfg, "undrained_failure_rel_error",
+                  std::abs(run.p.back() - fail.p) / fail.p + std::abs(run.q.back() - fail.q) / fail.q, ok);
   return rec;
 }
 

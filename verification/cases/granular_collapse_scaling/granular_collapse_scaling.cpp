@@ -188,8 +188,7 @@ std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, co
   summary.extra["height_exponent_large_a"] = h_large.exponent;
   summary.extra["height_prefactor_large_a"] = h_large.prefactor;
   const auto score = [&](const std::string& name, const PowerFit& f, double expected) {
-    const auto& tol = cfg.tolerance(name);
-    summary.add_metric(name, all_ok && f.points >= 2 ? std::abs(f.exponent - expected) : kNaN, tol.value, tol.why);
+    add_case_metric(summary, cfg, name, std::abs(f.exponent - expected), all_ok && f.points >= 2);
     summary.extra[name.substr(0, name.size() - 6) + "_expected"] = expected;
   };
   score("runout_exponent_large_a_error", r_large, 2.0 / 3.0);
