@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Core>
+
 #include "fluid/equation_of_state.hpp"
 #include "soil/modified_cam_clay.hpp"
 #include "soil/soil_fields.hpp"
@@ -56,12 +58,12 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
       P.p[i] = b.pressure;
     }
     if (m.is_cam_clay()) {
-      const double sx = P.field(SoilFields::xx)[i], sy = P.field(SoilFields::yy)[i], sz = P.field(SoilFields::zz)[i];
-      const double pm = (sx + sy + sz) / -3.0;
-      // q = sqrt(3 J2) of the diagonal initial stress
-      const double q = std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)));
-      P.field(SoilFields::preconsolidation)[i] =
-          soil::ModifiedCamClay::preconsolidation_for(std::max(pm, m.min_pressure), q, m.critical_state_slope, b.ocr);
+      const Eigen::Matrix3d sigma = Eigen::Vector3d(P.field(SoilFields::xx)[i], P.field(SoilFields::yy)[i],
+                                                    P.field(SoilFields::zz)[i]).asDiagonal();
+      using MCC = soil::ModifiedCamClay;
+      P.field(SoilFields::preconsolidation)[i] = MCC::preconsolidation_for(
+          std::max(MCC::mean_effective_stress(sigma), m.min_pressure), MCC::deviator_stress(sigma),
+          m.critical_state_slope, b.ocr);
     }
   });
 }

@@ -73,13 +73,8 @@ SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
 
 }  // namespace
 
-double SoilMaterial::wave_speed(double p) const {
-  double K = young / (3.0 * (1.0 - 2.0 * poisson)), G = young / (2.0 * (1.0 + poisson));
-  if (is_cam_clay()) {  // K = v max(p', p'_min)/kappa, constant Poisson ratio
-    K = (1.0 + void_ratio) * std::max(p, min_pressure) / kappa;
-    G = 1.5 * K * (1.0 - 2.0 * poisson) / (1.0 + poisson);
-  }
-  return std::sqrt((K + 4.0 * G / 3.0) / density);
+double SoilMaterial::wave_speed() const {
+  return p_wave_speed(young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson)), density);
 }
 
 Scene parse_scene(const nlohmann::json& j, const std::string& file) {

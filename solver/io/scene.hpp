@@ -1,6 +1,7 @@
 // A scene: everything one simulation needs, read from JSON and validated field by field.
 #pragma once
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -47,10 +48,15 @@ struct SoilMaterial {
   double artificial_viscosity_beta = 0.0;
   double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
   double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
-  // P-wave speed sqrt((K + 4G/3)/rho): the time step's acoustic limit. Modified Cam Clay: at
-  // the mean effective stress p' (its moduli grow with p'); the other models ignore p'.
-  double wave_speed(double p = 0) const;
+  // P-wave speed from young and poisson: the time step's acoustic limit for drucker_prager and
+  // linear_elastic (Modified Cam Clay's moduli grow with p': SoilForces takes them from the model).
+  double wave_speed() const;
 };
+
+// P-wave speed sqrt((K + 4G/3)/rho).
+inline double p_wave_speed(double bulk, double shear, double density) {
+  return std::sqrt((bulk + 4.0 * shear / 3.0) / density);
+}
 
 struct BodySpec {
   std::string material;

@@ -69,7 +69,10 @@ void SoilForces::update_wave_speeds(Particles& P) const {
 #pragma omp parallel for schedule(static) reduction(max : cmax)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Soil) continue;
-    c[i] = scene_.soils[P.material[i]].wave_speed(P.p[i]);
+    const auto mat = P.material[i];
+    const auto& mcc = cam_clay_[mat];
+    c[i] = mcc ? p_wave_speed(mcc->bulk_modulus(P.p[i]), mcc->shear_modulus(P.p[i]), scene_.soils[mat].density)
+               : scene_.soils[mat].wave_speed();
     cmax = std::max(cmax, c[i]);
   }
   for (const auto& m : scene_.soils)

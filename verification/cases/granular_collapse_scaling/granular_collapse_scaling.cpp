@@ -169,8 +169,7 @@ std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, co
 
   summary.dx = dx;
   summary.dimension = 2;
-  summary.particle_steps_per_s = kNaN;  // several particle counts: see the per-a records
-  double psteps = 0;
+  double psteps = 0;  // several particle counts: particle-steps summed over the per-a runs
   for (const auto& r : out) psteps += static_cast<double>(r.particles) * static_cast<double>(r.steps);
   summary.particle_steps_per_s = summary.wall_s > 0 ? psteps / summary.wall_s : 0;
   summary.extra["aspect_ratios"] = as;
