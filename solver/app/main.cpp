@@ -28,9 +28,9 @@ int cmd_run(const std::string& scene_path, const std::string& out_dir, bool quie
   Scene scene = load_scene(scene_path);
   Simulation sim(scene);
   Hdf5Output out(out_dir);
-  std::fprintf(stderr, "geosph run: %s, %zu fluid + %zu wall particles, %s kernel, %d thread(s)\n", scene.name.c_str(),
-               sim.moving_count(), sim.particles().size() - sim.moving_count(), kernel_name(scene.kernel).c_str(),
-               omp_get_max_threads());
+  std::fprintf(stderr, "geosph run: %s, %zu fluid + %zu soil + %zu structure + %zu wall particles, %s kernel, %d thread(s)\n",
+               scene.name.c_str(), sim.fluid_count(), sim.soil_count(), sim.structure_count(),
+               sim.particles().size() - sim.moving_count(), kernel_name(scene.kernel).c_str(), omp_get_max_threads());
   out.write(sim.particles(), sim.time(), sim.steps());
   double next_out = scene.output_interval > 0 ? scene.output_interval : 1e300;
   Progress bar(scene.t_end, !quiet);

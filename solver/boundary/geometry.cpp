@@ -32,7 +32,9 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
 // (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement); "isotropic":
 // sigma = -pressure I. Modified Cam Clay: the preconsolidation pressure is OCR times that of the
 // yield locus through the initial stress (p' floored at min_pressure at the free surface).
-void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
+// Structure bodies are built the same way (at rest) as Kind::Structure, or Kind::RigidStructure when
+// their motion is prescribed, and carry their body number + 1 in the field "structure_body".
+void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t body_index) {
   std::uint16_t mat = 0;
   while (s.soils[mat].name != b.material) ++mat;
   const SoilMaterial& m = s.soils[mat];
@@ -42,7 +44,9 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b) {
   const double k0 = b.k0 > 0 ? b.k0 : m.poisson / (1.0 - m.poisson);
   const bool geostatic = b.initial == "geostatic", isotropic = b.initial == "isotropic";
   lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
-    P.add(x, y, z, m.density * vol, m.density, Kind::Soil, mat);
+    const Kind kind = !b.structure ? Kind::Soil : b.motion.active ? Kind::RigidStructure : Kind::Structure;
+    P.add(x, y, z, m.density * vol, m.density, kind, mat);
+    if (b.structure) P.field("structure_body").back() = static_cast<double>(body_index + 1);
     if (b.fixed) P.field("fixed").back() = 1.0;
     else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
     const std::size_t i = P.size() - 1;
@@ -76,9 +80,10 @@ Particles build_particles(const Scene& s) {
   const double vol = std::pow(s.dx, s.dim);
   const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
 
-  for (const auto& b : s.bodies) {
+  for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
+    const BodySpec& b = s.bodies[bi];
     if (std::any_of(s.soils.begin(), s.soils.end(), [&](const SoilMaterial& m) { return m.name == b.material; })) {
-      add_soil_body(P, s, b);
+      add_soil_body(P, s, b, bi);
       continue;
     }
     std::uint16_t mat = 0;

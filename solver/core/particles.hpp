@@ -9,11 +9,16 @@
 
 namespace geosph {
 
-enum class Kind : std::uint8_t { Fluid = 0, DummyWall = 1, RepulsiveWall = 2, Soil = 3 };
+// Structure: a deformable structure body (its own SPH solid, in contact with soil);
+// RigidStructure: a structure body whose motion is prescribed (translated/rotated at a set rate).
+enum class Kind : std::uint8_t { Fluid = 0, DummyWall = 1, RepulsiveWall = 2, Soil = 3, Structure = 4, RigidStructure = 5 };
 
 inline bool is_wall(Kind k) { return k == Kind::DummyWall || k == Kind::RepulsiveWall; }
-// particles the integrator moves (material particles); walls are fixed
-inline bool is_moving(Kind k) { return k == Kind::Fluid || k == Kind::Soil; }
+// particles the integrator moves (material particles); walls and rigid structures are moved kinematically
+inline bool is_moving(Kind k) { return k == Kind::Fluid || k == Kind::Soil || k == Kind::Structure; }
+// particles that carry a stress tensor integrated by the solid mechanics (soil/soil_forces.hpp)
+inline bool is_solid(Kind k) { return k == Kind::Soil || k == Kind::Structure; }
+inline bool is_structure(Kind k) { return k == Kind::Structure || k == Kind::RigidStructure; }
 
 struct Particles {
   int dim = 2;

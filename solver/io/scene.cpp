@@ -11,6 +11,12 @@ namespace {
 
 const std::vector<std::string> kSides = {"left", "right", "bottom", "top", "front", "back"};
 
+bool is_solid_material(const Scene& s, const std::string& name) {
+  for (const auto& m : s.soils)
+    if (m.name == name) return true;
+  return false;
+}
+
 FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
   FluidMaterial m;
   m.name = name;
@@ -39,7 +45,7 @@ ContainerSpec parse_box(const JsonFields& f, int dim) {
 SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
   SoilMaterial m;
   m.name = name;
-  m.model = f.choice("model", {"drucker_prager", "modified_cam_clay", "linear_elastic"});
+  m.model = f.choice("model", {"drucker_prager", "modified_cam_clay", "linear_elastic", "von_mises"});
   m.density = f.number("density", Range::positive());
   if (!m.is_cam_clay()) m.young = f.number("young_modulus", Range::positive());
   m.poisson = f.number("poisson_ratio", Range::open(-1.0, 0.5));
@@ -56,6 +62,10 @@ SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
     m.cohesion = f.number("cohesion", Range::non_negative(), 0.0);
     m.friction_angle = f.number("friction_angle", Range{0, 90, false, true});
     m.dilatancy_angle = f.number("dilatancy_angle", Range{0, 90, false, true}, 0.0);
+  }
+  if (m.model == "von_mises") {  // J2 plasticity = Drucker-Prager with phi = 0: sqrt(J2) <= k = sigma_y / sqrt(3)
+    m.yield_stress = f.number("yield_stress", Range::positive());
+    m.cohesion = m.yield_stress / std::sqrt(3.0);
   }
   if (m.dilatancy_angle > m.friction_angle)
     f.fail("dilatancy_angle", "must not exceed friction_angle (" + std::to_string(m.friction_angle) + " deg), got " +
@@ -134,7 +144,8 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   auto mats = top.object("materials");
   for (const auto& name : mats.keys()) {
     auto m = mats.object(name);
-    const std::string model = m.choice("model", {"tait_fluid", "drucker_prager", "modified_cam_clay", "linear_elastic"});
+    const std::string model =
+        m.choice("model", {"tait_fluid", "drucker_prager", "modified_cam_clay", "linear_elastic", "von_mises"});
     if (model == "tait_fluid") s.materials.push_back(parse_fluid(m, name));
     else s.soils.push_back(parse_soil(m, name));
   }
@@ -145,17 +156,23 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     BodySpec body;
     body.material = b.text("material");
     bool is_fluid = false, is_soil = false, is_cam_clay = false;
+    std::string solid_model;
     for (const auto& m : s.materials) is_fluid = is_fluid || m.name == body.material;
     for (const auto& m : s.soils)
-      if (m.name == body.material) { is_soil = true; is_cam_clay = m.is_cam_clay(); }
+      if (m.name == body.material) { is_soil = true; is_cam_clay = m.is_cam_clay(); solid_model = m.model; }
     if (!is_fluid && !is_soil) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
+    body.structure = b.boolean("structure", false);
+    if (body.structure && solid_model != "linear_elastic" && solid_model != "von_mises")
+      b.fail("structure", "needs a linear_elastic or von_mises material; \"" + body.material + "\" is " +
+                              (is_fluid ? std::string("a fluid") : "\"" + solid_model + "\""));
     b.choice("shape", {"box"});
     body.lo = b.vector("min", d);
     body.hi = b.vector("max", d);
     for (int a = 0; a < d; ++a)
       if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
-    body.initial = is_fluid ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
-                            : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");
+    body.initial = is_fluid         ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
+                   : body.structure ? b.choice("initial", {"rest"}, "rest")
+                                    : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");
     if (is_soil && b.has("k0")) body.k0 = b.number("k0", Range::open(0, 10));
     if (body.initial == "isotropic") body.pressure = b.number("pressure", Range::positive());
     if (is_cam_clay) {
@@ -168,6 +185,22 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     body.velocity = b.vector("velocity", d, {0, 0, 0});
     body.fixed = b.boolean("fixed", false);
     if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
+    if (body.structure) {
+      body.interface_friction_angle = b.number("interface_friction_angle", Range{0, 90, false, true}, -1.0);
+      if (auto mo = b.optional_object("motion")) {
+        if (body.fixed) b.fail("motion", "cannot be combined with \"fixed\": true");
+        body.motion.active = true;
+        body.motion.velocity = mo->vector("velocity", d, {0, 0, 0});
+        body.motion.angular_velocity = mo->number("angular_velocity", Range::between(-100, 100), 0.0);
+        if (body.motion.angular_velocity != 0 && d == 3)
+          mo->fail("angular_velocity", "prescribed rotation is implemented in 2D only (about z)");
+        std::array<double, 3> mid{};
+        for (int a = 0; a < d; ++a) mid[a] = 0.5 * (body.lo[a] + body.hi[a]);
+        body.motion.centre = mo->vector("centre", d, mid);
+        body.motion.ramp = mo->number("ramp", Range::non_negative(), 0.0);
+        mo->reject_unknown();
+      }
+    }
     b.reject_unknown();
     s.bodies.push_back(body);
   }
@@ -197,6 +230,55 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   top.reject_unknown();
   validate_scene(s);
   return s;
+}
+
+// Structure bodies: none may overlap a soil body at start (the contact would begin with the soil
+// inside the structure), every structure in a scene with soil names its interface friction, and a
+// prescribed motion must keep the structure inside the domain until time.end.
+static void validate_structures(const Scene& s) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw InputError(s.file + ": field '" + field + "': " + what);
+  };
+  const char* axes = "xyz";
+  bool any_soil = false;
+  for (const auto& b : s.bodies) any_soil = any_soil || (!b.structure && is_solid_material(s, b.material));
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    const BodySpec& st = s.bodies[k];
+    if (!st.structure) continue;
+    const std::string field = "bodies[" + std::to_string(k) + "]";
+    if (s.has_fluid()) fail(field + ".structure", "structures are coupled with soil only; this scene also has a fluid");
+    if (any_soil && st.interface_friction_angle < 0)
+      fail(field + ".interface_friction_angle",
+           "is required for a structure in a scene with soil (the soil-structure interface friction angle delta, "
+           "in [0, 90) degrees)");
+    for (std::size_t o = 0; o < s.bodies.size(); ++o) {
+      const BodySpec& so = s.bodies[o];
+      if (so.structure || !is_solid_material(s, so.material)) continue;
+      double overlap = 1;
+      for (int a = 0; a < s.dim; ++a)
+        overlap *= std::max(0.0, std::min(st.hi[a], so.hi[a]) - std::max(st.lo[a], so.lo[a]));
+      if (overlap > 1e-9 * std::pow(s.dx, s.dim))
+        fail(field, "the structure overlaps the soil body bodies[" + std::to_string(o) +
+                        "] at start; structure and soil boxes may touch but not intersect");
+    }
+    if (!st.motion.active) continue;
+    // corners at time.end: rotated about the centre by omega * t and translated by v * t (the ramp only
+    // shortens the path, so this bounds it)
+    const double th = st.motion.angular_velocity * s.t_end;
+    for (int c = 0; c < (1 << s.dim); ++c) {
+      std::array<double, 3> q{};
+      for (int a = 0; a < s.dim; ++a) q[a] = (c >> a & 1 ? st.hi[a] : st.lo[a]) - st.motion.centre[a];
+      const double rx = std::cos(th) * q[0] - std::sin(th) * q[1], ry = std::sin(th) * q[0] + std::cos(th) * q[1];
+      q[0] = rx; q[1] = ry;
+      for (int a = 0; a < s.dim; ++a) {
+        const double x = st.motion.centre[a] + q[a] + st.motion.velocity[a] * s.t_end;
+        if (!s.domain.periodic[a] && (x < s.domain.lo[a] || x > s.domain.hi[a]))
+          fail(field + ".motion", std::string("the prescribed motion carries the structure outside the domain along ") +
+                                      axes[a] + " by time.end = " + std::to_string(s.t_end) + " s (corner reaches " +
+                                      std::to_string(x) + " m)");
+      }
+    }
+  }
 }
 
 void validate_scene(const Scene& s) {
@@ -248,6 +330,7 @@ void validate_scene(const Scene& s) {
         fail("bodies[" + std::to_string(b) + "].initial",
              "\"geostatic\" without gravity at t = 0 gives p' = 0, but the modified_cam_clay material \"" + m.name +
                  "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
+  validate_structures(s);
   if (s.has_fluid() && s.has_soil() && s.has_walls())
     fail("materials", "fluid and soil in one scene with walls is not supported yet (two-phase coupling is a later module)");
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")

@@ -25,18 +25,21 @@ struct FluidMaterial {
   double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
 };
 
-// Elasto-plastic soil (Drucker-Prager, Bui et al. 2008; Modified Cam Clay, Roscoe & Burland 1968).
-// Angles in degrees as written in the scene; the stress is integrated with the Jaumann rate and its
-// pressure comes from the constitutive model (no equation of state).
+// An SPH solid material: soil (Drucker-Prager, Bui et al. 2008; Modified Cam Clay, Roscoe & Burland
+// 1968) or a structure (linear_elastic; von_mises, elastic-perfectly plastic, integrated as
+// Drucker-Prager with phi = 0 and k = yield_stress / sqrt(3)). Angles in degrees as written in the
+// scene; the stress is integrated with the Jaumann rate and its pressure comes from the constitutive
+// model (no equation of state).
 struct SoilMaterial {
   std::string name;
-  std::string model = "drucker_prager";  // drucker_prager | modified_cam_clay | linear_elastic (no yield)
+  std::string model = "drucker_prager";  // drucker_prager | modified_cam_clay | linear_elastic (no yield) | von_mises
   double density = 0;                 // [kg/m^3]
   double young = 0;                   // Young's modulus E [Pa]
   double poisson = 0;                 // Poisson ratio nu, in (-1, 0.5)
   double cohesion = 0;                // Mohr-Coulomb c [Pa]
   double friction_angle = 0;          // Mohr-Coulomb phi [deg], in [0, 90)
   double dilatancy_angle = 0;         // psi [deg], in [0, phi]
+  double yield_stress = 0;            // von_mises: uniaxial yield stress [Pa] (cohesion = yield_stress / sqrt(3))
   // modified_cam_clay (soil/modified_cam_clay.hpp): pressure-dependent elasticity, no young_modulus
   double lambda = 0;                  // slope of the normal compression line in v - ln p'
   double kappa = 0;                   // slope of the unloading-reloading lines, 0 < kappa < lambda
@@ -70,6 +73,20 @@ struct BodySpec {
   std::array<double, 3> velocity{};
   bool fixed = false;                 // held in place (velocity zero) but otherwise part of the material,
                                       // e.g. the clamped root of a plate (Gray, Monaghan & Swift 2001)
+  // Structure bodies (structure/, coupling/soil_structure_contact.hpp): an SPH solid of their own
+  // material that meets soil only through frictional contact.
+  bool structure = false;
+  double interface_friction_angle = -1;  // delta [deg] of the soil-structure interface (Coulomb), in [0, 90)
+  // Prescribed rigid motion (makes the structure rigid): velocity of its reference point and angular
+  // velocity about it (2D: about z), both scaled by a smooth start over `ramp` seconds.
+  struct Motion {
+    bool active = false;
+    std::array<double, 3> velocity{};  // [m/s]
+    double angular_velocity = 0;       // [rad/s], counter-clockwise
+    std::array<double, 3> centre{};    // reference point (rotation centre) at t = 0 [m]
+    double ramp = 0;                   // [s]
+  } motion;
+  bool is_rigid_structure() const { return structure && motion.active; }
 };
 
 struct ContainerSpec {

@@ -13,7 +13,8 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   P_ = build_particles(scene_);
   n_fluid_ = P_.count(Kind::Fluid);
   n_soil_ = P_.count(Kind::Soil);
-  if (n_fluid_ + n_soil_ == 0)
+  n_structure_ = P_.count(Kind::Structure) + P_.count(Kind::RigidStructure);
+  if (n_fluid_ + n_soil_ + n_structure_ == 0)
     throw InputError(scene_.file + ": field 'bodies': the scene creates no particles (bodies smaller than dx?)");
   const bool dummy = P_.count(Kind::DummyWall) > 0;
   if (scene_.has_fluid()) {
@@ -35,6 +36,14 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     for (const auto& m : scene_.soils) bounds_.soil.rho0.push_back(m.density);
     bounds_.soil.max_speed = soil_->max_wave_speed();
   }
+  if (P_.count(Kind::RigidStructure) > 0) {
+    rigid_ = std::make_unique<RigidMotions>(scene_);
+    rigid_->set_velocities(P_, 0.0);
+  }
+  if (n_soil_ > 0 && n_structure_ > 0) {
+    contact_ = std::make_unique<SoilStructureContact>(scene_);
+    contact_->allocate(P_);
+  }
   bounds_.max_density_variation = scene_.max_density_variation;
   limits_ = {scene_.cfl, scene_.force_factor, scene_.viscous_factor};
   const long outside = cells_.build(P_, scene_.domain, scene_.support());
@@ -43,6 +52,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
                      std::to_string(P_.x[outside]) + ", " + std::to_string(P_.y[outside]) + ", " +
                      std::to_string(P_.z[outside]) + ") starts outside the domain");
   neighbour_search();
+  choose_time_step();  // acoustic limit only (nothing moves yet): the contact needs the step length
   forces();
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();
@@ -83,6 +93,7 @@ void Simulation::forces() {
     if (soil_walls_) soil_walls_->update(P_, cells_, g);
     soil_->momentum(P_, cells_, g);
   }
+  if (contact_) contact_->apply(P_, cells_, dt_);
 }
 
 void Simulation::choose_time_step() {
@@ -119,6 +130,7 @@ void Simulation::step() {
       else if (*q[a] < dom.lo[a]) *q[a] += dom.length(a);
     }
   }
+  if (rigid_) rigid_->advance(P_, t_, dt);
   t_ += dt;
   ++step_;
   neighbour_search();

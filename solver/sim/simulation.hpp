@@ -1,6 +1,7 @@
 // The time loop. Builds only the modules the scene declares (fluid forces for fluid materials,
-// soil stress and forces for soil materials, each phase's wall extrapolation only if the scene
-// has dummy walls) and advances them with a kick-drift-kick scheme:
+// soil stress and forces for soil and structure solids, each phase's wall extrapolation only if the
+// scene has dummy walls, the prescribed motion of rigid structures, soil-structure contact when both
+// are present) and advances them with a kick-drift-kick scheme:
 //   v^{n+1/2} = v^n + dt/2 a^n,   x^{n+1} = x^n + dt v^{n+1/2},
 //   Drho (and, for soil, the strain and spin increments) from (x^{n+1}, v^{n+1/2}):
 //   rho^{n+1} = rho^n + dt Drho,  sigma^{n+1} = return_map(sigma^n + Jaumann increment),
@@ -10,6 +11,7 @@
 #include <memory>
 
 #include "boundary/dummy_wall.hpp"
+#include "coupling/soil_structure_contact.hpp"
 #include "boundary/soil_wall.hpp"
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -18,6 +20,7 @@
 #include "io/scene.hpp"
 #include "sim/stability.hpp"
 #include "soil/soil_forces.hpp"
+#include "structure/rigid_motion.hpp"
 
 namespace geosph {
 
@@ -38,8 +41,11 @@ class Simulation {
   double dt() const { return dt_; }
   std::size_t fluid_count() const { return n_fluid_; }
   std::size_t soil_count() const { return n_soil_; }
-  // material (moving) particles: fluid + soil; walls excluded
-  std::size_t moving_count() const { return n_fluid_ + n_soil_; }
+  std::size_t structure_count() const { return n_structure_; }  // deformable and rigid structure particles
+  // particles the step integrates or moves: fluid, soil and structures; walls excluded
+  std::size_t moving_count() const { return n_fluid_ + n_soil_ + n_structure_; }
+  // prescribed motion of the rigid structures (null if the scene has none)
+  const RigidMotions* rigid_motions() const { return rigid_.get(); }
   // Gravity at time t, ramped smoothly from gravity_ramp_from x g over scene.gravity_ramp (Adami et al.
   // 2012, eq. 33, there from zero).
   std::array<double, 3> gravity_at(double t) const;
@@ -56,10 +62,12 @@ class Simulation {
   std::unique_ptr<DummyWalls> dummy_walls_;
   std::unique_ptr<SoilForces> soil_;
   std::unique_ptr<SoilWalls> soil_walls_;
+  std::unique_ptr<RigidMotions> rigid_;
+  std::unique_ptr<SoilStructureContact> contact_;
   StateBounds bounds_;
   TimeStepLimits limits_;
   StateSummary state_;
-  std::size_t n_fluid_ = 0, n_soil_ = 0;
+  std::size_t n_fluid_ = 0, n_soil_ = 0, n_structure_ = 0;
   double t_ = 0, dt_ = 0;
   long step_ = 0;
 };

@@ -32,6 +32,13 @@ struct StressView {
   }
 };
 
+// Pairs that share one SPH continuum: soil with soil and with dummy walls (which carry its ghost
+// stress), a deformable structure with its own particles. Soil and structures meet only through
+// contact forces (coupling/soil_structure_contact.hpp), rigid structures only through contact.
+inline bool continuum_pair(Kind ki, Kind kj) {
+  return ki == Kind::Soil ? (kj == Kind::Soil || kj == Kind::DummyWall) : kj == Kind::Structure;
+}
+
 }  // namespace
 
 SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
@@ -68,7 +75,7 @@ void SoilForces::update_wave_speeds(Particles& P) const {
   const std::size_t n = P.size();
 #pragma omp parallel for schedule(static) reduction(max : cmax)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Soil) continue;
+    if (!is_solid(P.kind[i])) continue;
     const auto mat = P.material[i];
     const auto& mcc = cam_clay_[mat];
     c[i] = mcc ? p_wave_speed(mcc->bulk_modulus(P.p[i]), mcc->shear_modulus(P.p[i]), scene_.soils[mat].density)
@@ -108,13 +115,14 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const int dim = scene_.dim;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Soil) continue;
+    const Kind ki = P.kind[i];
+    if (!is_solid(ki)) continue;
     const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double drho = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
-      if (kj != Kind::Soil && kj != Kind::DummyWall) return;
+      if (!continuum_pair(ki, kj)) return;
       const double fw = kernel.gradW_over_r(std::sqrt(r2));
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
       const double Vj = P.m[j] / P.rho[j];
@@ -211,13 +219,13 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
   const StressView sv(P);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Soil && P.kind[i] != Kind::DummyWall) continue;
+    if (!is_solid(P.kind[i]) && P.kind[i] != Kind::DummyWall) continue;
     const Eigen::Matrix3d s = sv.get(i);
     const double inv_r2 = 1.0 / (P.rho[i] * P.rho[i]);
     S_[i] = {s(0, 0) * inv_r2, s(1, 1) * inv_r2, s(2, 2) * inv_r2, s(0, 1) * inv_r2, s(0, 2) * inv_r2, s(1, 2) * inv_r2};
     // Artificial stress (Gray, Monaghan & Swift 2001, eqs. 3.2-3.5): in the principal frame,
     // R'_a = -eps sigma'_a / rho^2 where sigma'_a > 0 (tension), else 0; rotated back.
-    const std::size_t mat = P.kind[i] == Kind::Soil ? P.material[i] : 0;
+    const std::size_t mat = is_solid(P.kind[i]) ? P.material[i] : 0;
     const double eps = scene_.soils[mat].artificial_stress;
     R_[i] = {0, 0, 0, 0, 0, 0};
     if (eps <= 0) continue;
@@ -247,7 +255,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const double* cw = has_cam_clay_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Soil) continue;
+    const Kind ki = P.kind[i];
+    if (!is_solid(ki)) continue;
     const SoilMaterial& mi = scene_.soils[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double ci = cw ? cw[i] : mi.wave_speed();
@@ -260,7 +269,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     double ax = 0, ay = 0, az = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
-      if (kj != Kind::Soil && kj != Kind::DummyWall) return;
+      if (!continuum_pair(ki, kj)) return;
       const double r = std::sqrt(r2);
       const double fw = kernel.gradW_over_r(r);
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "cases/cam_clay_k0_column/cam_clay_k0_column.hpp"
+#include "cases/cantilever_beam/cantilever_beam.hpp"
 #include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
 #include "cases/dam_break_2d/dam_break_2d.hpp"
 #include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
@@ -10,6 +11,7 @@
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 #include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
+#include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
 #include "cases/strip_footing/strip_footing.hpp"
 
 namespace geosph::verify {
@@ -26,6 +28,9 @@ const std::vector<CaseEntry>& catalogue() {
       {"strip_footing", run_strip_footing},
       {"cam_clay_triaxial", run_cam_clay_triaxial},
       {"cam_clay_k0_column", run_cam_clay_k0_column},
+      {"cantilever_beam", run_cantilever_beam},
+      {"rankine_active", run_rankine_active},
+      {"rankine_passive", run_rankine_passive},
   };
   return cases;
 }

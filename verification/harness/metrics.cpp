@@ -40,6 +40,19 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 
 double observed_order(double dx1, double e1, double dx2, double e2) { return std::log(e1 / e2) / std::log(dx1 / dx2); }
 
+Extrapolation richardson(const std::vector<double>& dx, const std::vector<double>& q, double expected_order) {
+  Extrapolation e;
+  e.order = expected_order;
+  const std::size_t n = q.size();
+  if (n < 2) { e.value = n == 1 ? q[0] : NAN; return e; }
+  if (n >= 3) {
+    const double d1 = q[n - 2] - q[n - 3], d2 = q[n - 1] - q[n - 2];
+    if (d1 != 0 && d2 / d1 > 0) { e.order = observed_order(dx[n - 3], d1, dx[n - 2], d2); e.order_observed = true; }
+  }
+  e.value = q[n - 1] + (q[n - 1] - q[n - 2]) / (std::pow(dx[n - 2] / dx[n - 1], e.order) - 1.0);
+  return e;
+}
+
 const std::vector<double>& Csv::column(const std::string& name) const {
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (columns[c] == name) return data[c];

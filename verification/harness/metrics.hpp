@@ -15,6 +15,15 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 // Observed order p from errors e1 (spacing dx1) and e2 (dx2): e ~ dx^p.
 double observed_order(double dx1, double e1, double dx2, double e2);
 
+// Richardson extrapolation to dx -> 0 of a quantity q(dx) computed at spacings dx (coarse to fine,
+// constant ratio): q_f + (q_f - q_c)/(r^p - 1) from the two finest; p is observed from the last three
+// values when there are three and they converge monotonically, else `expected_order`.
+struct Extrapolation {
+  double value = 0, order = 0;
+  bool order_observed = false;
+};
+Extrapolation richardson(const std::vector<double>& dx, const std::vector<double>& q, double expected_order);
+
 // Two-column numeric CSV; lines starting with '#' are the provenance header (returned).
 struct Csv {
   std::vector<std::string> header_comments, columns;

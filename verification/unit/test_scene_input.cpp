@@ -236,3 +236,67 @@ TEST(SceneInput, CamClayMaterialRanges) {
   j["bodies"][0]["ocr"] = 2;
   expect_error(j, "bodies[0].ocr", "is not a known field");
 }
+
+namespace {
+// Dry soil behind a rigid retaining wall (a structure body with prescribed motion).
+json soil_structure_scene() {
+  return json::parse(R"({
+    "name": "wall", "dimension": 2, "dx": 0.05,
+    "domain": {"min": [-0.5, -0.3], "max": [2.5, 1.5]},
+    "gravity": [0, -9.81],
+    "time": {"end": 1.0},
+    "materials": {
+      "sand": {"model": "drucker_prager", "density": 1700, "young_modulus": 5e6, "poisson_ratio": 0.3,
+               "friction_angle": 30},
+      "steel": {"model": "linear_elastic", "density": 7800, "young_modulus": 2e8, "poisson_ratio": 0.3}
+    },
+    "bodies": [
+      {"material": "sand", "shape": "box", "min": [0, 0], "max": [2, 1], "initial": "geostatic"},
+      {"material": "steel", "shape": "box", "min": [-0.1, 0], "max": [0, 1.2], "structure": true,
+       "interface_friction_angle": 20, "motion": {"velocity": [-0.01, 0]}}
+    ]
+  })");
+}
+}  // namespace
+
+TEST(SceneInput, SoilStructureSceneParses) {
+  const Scene s = parse_scene(soil_structure_scene(), "ok.json");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  EXPECT_TRUE(s.bodies[1].is_rigid_structure());
+  EXPECT_DOUBLE_EQ(s.bodies[1].interface_friction_angle, 20.0);
+  EXPECT_DOUBLE_EQ(s.bodies[1].motion.centre[1], 0.6);  // default reference point: the box centre
+}
+
+TEST(SceneInput, StructureOverlappingSoilIsRejected) {
+  auto j = soil_structure_scene();
+  j["bodies"][1]["max"] = {0.1, 1.2};
+  expect_error(j, "bodies[1]", "overlaps the soil body bodies[0]");
+}
+
+TEST(SceneInput, StructureOutsideTheDomainIsRejected) {
+  auto j = soil_structure_scene();
+  j["bodies"][1]["min"] = {-0.6, 0};
+  expect_error(j, "bodies[1]", "extends outside the domain along x");
+  j = soil_structure_scene();
+  j["bodies"][1]["motion"]["velocity"] = {-1.0, 0};  // 1 m to the left within time.end
+  expect_error(j, "bodies[1].motion", "carries the structure outside the domain along x");
+}
+
+TEST(SceneInput, StructureNeedsInterfaceFrictionAndAStructuralMaterial) {
+  auto j = soil_structure_scene();
+  j["bodies"][1].erase("interface_friction_angle");
+  expect_error(j, "bodies[1].interface_friction_angle", "is required for a structure in a scene with soil");
+  j = soil_structure_scene();
+  j["bodies"][1]["interface_friction_angle"] = 95;
+  expect_error(j, "interface_friction_angle", "[0, 90)");
+  j = soil_structure_scene();
+  j["bodies"][1]["material"] = "sand";
+  expect_error(j, "structure", "needs a linear_elastic or von_mises material");
+  j = soil_structure_scene();
+  j["materials"]["steel"] = json::parse(R"({"model": "von_mises", "density": 7800, "young_modulus": 2e8,
+                                             "poisson_ratio": 0.3, "yield_stress": -1})");
+  expect_error(j, "yield_stress", "");
+  j = soil_structure_scene();
+  j["bodies"][1]["fixed"] = true;
+  expect_error(j, "motion", "cannot be combined with \"fixed\"");
+}

@@ -121,19 +121,16 @@ std::vector<Record> run_oscillating_plate(const CaseContext& ctx) {
   Record& fine = out.back();
   for (std::size_t k = 0; k + 1 < n; ++k) out[k].scored = false;
   const double omega = fine.extra["omega_theory"];
-  double extrapolated = NAN, order = cfg.spec.value("expected_order", 1.0);
-  auto w = [&](std::size_t k) { return out[k].extra["omega_sph"].is_number() ? out[k].extra["omega_sph"].get<double>() : NAN; };
-  if (n >= 3) {
-    const double e1 = w(n - 2) - w(n - 3), e2 = w(n - 1) - w(n - 2);
-    if (e1 != 0 && e2 / e1 > 0) order = std::log(e1 / e2) / std::log(out[n - 3].dx / out[n - 2].dx);
-    fine.extra["observed_order_frequency"] = order;
+  std::vector<double> spacings, omegas;
+  for (const auto& r : out) {
+    spacings.push_back(r.dx);
+    omegas.push_back(r.extra["omega_sph"].is_number() ? r.extra["omega_sph"].get<double>() : NAN);
   }
-  if (n >= 2) {
-    const double ratio = out[n - 2].dx / out[n - 1].dx;
-    extrapolated = w(n - 1) + (w(n - 1) - w(n - 2)) / (std::pow(ratio, order) - 1.0);
-  }
+  const Extrapolation ex = richardson(spacings, omegas, cfg.spec.value("expected_order", 1.0));
+  const double extrapolated = ex.value;
+  if (ex.order_observed) fine.extra["observed_order_frequency"] = ex.order;
   fine.extra["omega_extrapolated"] = extrapolated;
-  fine.extra["extrapolation_order"] = order;
+  fine.extra["extrapolation_order"] = ex.order;
   const auto& tol = cfg.tolerance("extrapolated_frequency_rel_error");
   const bool all_stable = std::all_of(out.begin(), out.end(), [](const Record& r) { return r.stable; });
   fine.metrics.clear();  // the finest record is judged on the extrapolated frequency

@@ -1,0 +1,64 @@
+#include "structure/rigid_motion.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace geosph {
+
+namespace {
+// f(i, body b, its motion) for every rigid structure particle
+template <class F>
+void for_each_rigid(Particles& P, const Scene& scene, F&& f) {
+  const double* body = P.field("structure_body").data();
+  const std::size_t n = P.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::RigidStructure) continue;
+    const auto b = static_cast<std::size_t>(body[i]) - 1;
+    f(i, b, scene.bodies[b].motion);
+  }
+}
+}  // namespace
+
+RigidMotions::RigidMotions(const Scene& scene) : scene_(scene), state_(scene.bodies.size()) {
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) state_[b].centre = scene.bodies[b].motion.centre;
+}
+
+double RigidMotions::ramp_factor(const BodySpec::Motion& m, double t) const {
+  if (m.ramp <= 0 || t >= m.ramp) return 1.0;
+  return 0.5 * (std::sin((-0.5 + t / m.ramp) * std::numbers::pi) + 1.0);
+}
+
+void RigidMotions::set_velocities(Particles& P, double t) const {
+  for_each_rigid(P, scene_, [&](std::size_t i, std::size_t b, const BodySpec::Motion& m) {
+    const double f = ramp_factor(m, t);
+    const auto& c = state_[b].centre;
+    P.vx[i] = f * (m.velocity[0] - m.angular_velocity * (P.y[i] - c[1]));
+    P.vy[i] = f * (m.velocity[1] + m.angular_velocity * (P.x[i] - c[0]));
+    P.vz[i] = f * m.velocity[2];
+  });
+}
+
+void RigidMotions::advance(Particles& P, double t, double dt) {
+  for_each_rigid(P, scene_, [&](std::size_t i, std::size_t b, const BodySpec::Motion& m) {
+    const double f = ramp_factor(m, t + 0.5 * dt);
+    const double th = f * m.angular_velocity * dt;
+    const auto& c = state_[b].centre;
+    const double rx = P.x[i] - c[0], ry = P.y[i] - c[1];
+    P.x[i] = c[0] + std::cos(th) * rx - std::sin(th) * ry + f * m.velocity[0] * dt;
+    P.y[i] = c[1] + std::sin(th) * rx + std::cos(th) * ry + f * m.velocity[1] * dt;
+    P.z[i] += f * m.velocity[2] * dt;
+  });
+  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+    const auto& m = scene_.bodies[b].motion;
+    if (!scene_.bodies[b].is_rigid_structure()) continue;
+    const double f = ramp_factor(m, t + 0.5 * dt);
+    for (int a = 0; a < 3; ++a) {
+      state_[b].centre[a] += f * m.velocity[a] * dt;
+      state_[b].displacement[a] += f * m.velocity[a] * dt;
+    }
+    state_[b].angle += f * m.angular_velocity * dt;
+  }
+  set_velocities(P, t + dt);
+}
+
+}  // namespace geosph

@@ -1,0 +1,118 @@
+// Elastic cantilever structure (structure body, linear_elastic) clamped at x = 0 (its root, a few
+// particle columns at x < 0, is a fixed part of the same body), loaded by its own weight ramped up
+// smoothly over two periods of the first mode; the tip deflection averaged over the next two periods
+// is the static deflection, compared with Timoshenko beam theory (bending + shear):
+//   delta = q L^4 / (8 E' I) + q L^2 / (2 kappa G A),  q = rho g H,  I = H^3/12,  A = H,  kappa = 5/6,
+//   E' = E / (1 - nu^2) (plane strain).
+// It checks the structure solid alone (no soil). As for oscillating_plate, the single-resolution
+// error is first order in dx, so the scored metric is the Richardson-extrapolated deflection, with the
+// order observed from three spacings (H/dx = 5, 10, 20 at the quick level).
+#include "cases/cantilever_beam/cantilever_beam.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "harness/catalogue.hpp"
+#include "harness/metrics.hpp"
+#include "harness/run_stats.hpp"
+#include "soil/soil_fields.hpp"
+
+namespace geosph::verify {
+
+namespace {
+
+struct Beam {
+  double L, H, E_plane, G, q, delta, omega;
+};
+
+Beam beam_theory(const Scene& scene) {
+  const auto& body = scene.bodies.front();
+  const SoilMaterial& m = scene.soils.front();
+  Beam b;
+  b.L = body.hi[0] - body.lo[0];
+  b.H = body.hi[1] - body.lo[1];
+  b.E_plane = m.young / (1.0 - m.poisson * m.poisson);
+  b.G = m.young / (2.0 * (1.0 + m.poisson));
+  b.q = m.density * -scene.gravity[1] * b.H;
+  const double I = b.H * b.H * b.H / 12.0, kappa = 5.0 / 6.0;
+  b.delta = b.q * std::pow(b.L, 4) / (8.0 * b.E_plane * I) + b.q * b.L * b.L / (2.0 * kappa * b.G * b.H);
+  const double k = 1.875 / b.L;  // first cantilever mode
+  b.omega = std::sqrt(b.E_plane * I * std::pow(k, 4) / (m.density * b.H));
+  return b;
+}
+
+Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
+  Scene scene = cfg.scene(spacing);
+  const Beam b = beam_theory(scene);
+  const double T = 2.0 * M_PI / b.omega;
+  scene.gravity_ramp = cfg.spec.at("periods_ramp").get<double>() * T;
+  const double t_avg = scene.gravity_ramp;
+  scene.t_end = t_avg + cfg.spec.at("periods_average").get<double>() * T;
+  Simulation sim(scene);
+  const Particles& P0 = sim.particles();
+  std::size_t tip = 0;
+  double best = 1e300;
+  for (std::size_t i = 0; i < P0.size(); ++i) {
+    const double d = std::hypot(P0.x[i] - b.L, P0.y[i]);
+    if (P0.kind[i] == Kind::Structure && d < best) { best = d; tip = i; }
+  }
+  const std::int64_t tip_id = P0.id[tip];
+  const double y0 = P0.y[tip];
+  Record rec = start_record(cfg, ctx);
+  Series defl{"SPH tip", "simulation", "tip", "t / T", "tip deflection / theory", {}, {}};
+  double sum = 0, weight = 0, t_prev = 0;
+  const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
+    const Particles& P = s.particles();
+    if (P.id[tip] != tip_id) tip = static_cast<std::size_t>(std::find(P.id.begin(), P.id.end(), tip_id) - P.id.begin());
+    const double w = -(P.y[tip] - y0);
+    if (defl.x.empty() || s.time() / T > defl.x.back() + 0.01) { defl.x.push_back(s.time() / T); defl.y.push_back(w / b.delta); }
+    if (s.time() > t_avg) { sum += w * (s.time() - std::max(t_prev, t_avg)); weight += s.time() - std::max(t_prev, t_avg); }
+    t_prev = s.time();
+  }, ctx.progress);
+  const double delta_sph = weight > 0 ? sum / weight : NAN;
+  rec.series.push_back(defl);
+  rec.series.push_back({"Timoshenko static deflection", "analytical", "tip", defl.xlabel, defl.ylabel,
+                        {0.0, defl.x.empty() ? 0.0 : defl.x.back()}, {1.0, 1.0}});
+  rec.extra["deflection_sph_m"] = delta_sph;
+  rec.extra["deflection_theory_m"] = b.delta;
+  rec.extra["shear_part_of_theory"] = (b.q * b.L * b.L / (2.0 * 5.0 / 6.0 * b.G * b.H)) / b.delta;
+  rec.extra["H_over_dx"] = b.H / scene.dx;
+  rec.options["artificial_stress"] = scene.soils.front().artificial_stress;
+  rec.options["kernel_gradient_correction"] = scene.kernel_gradient_correction;
+  const auto& tol = cfg.tolerance("deflection_rel_error");
+  rec.add_metric("deflection_rel_error", ok ? std::abs(delta_sph - b.delta) / b.delta : NAN, tol.value, tol.why);
+  rec.snapshot = field_snapshot(sim, SoilFields::xx, "Pa");
+  return rec;
+}
+
+}  // namespace
+
+// Every spacing of the level (coarse to fine); the scored metric, on the finest record, is the
+// Richardson-extrapolated deflection; the coarser records are steps of it (unscored).
+std::vector<Record> run_cantilever_beam(const CaseContext& ctx) {
+  const CaseConfig cfg = load_case(ctx, "cantilever_beam");
+  std::vector<Record> out;
+  std::vector<double> spacings, deflections;
+  for (double dx : cfg.level_numbers("dx")) {
+    out.push_back(run_at(cfg, ctx, dx));
+    spacings.push_back(dx);
+    deflections.push_back(out.back().extra["deflection_sph_m"].get<double>());
+  }
+  for (std::size_t k = 0; k + 1 < out.size(); ++k) out[k].scored = false;
+  Record& fine = out.back();
+  const Extrapolation ex = richardson(spacings, deflections, cfg.spec.value("expected_order", 1.0));
+  const double theory = fine.extra["deflection_theory_m"];
+  fine.extra["deflection_extrapolated_m"] = ex.value;
+  fine.extra["extrapolation_order"] = ex.order;
+  // for transparency: the same extrapolation with the assumed first order (two finest spacings)
+  fine.extra["deflection_extrapolated_first_order_m"] =
+      richardson({spacings.end()[-2], spacings.back()}, {deflections.end()[-2], deflections.back()}, 1.0).value;
+  const bool all_stable = std::all_of(out.begin(), out.end(), [](const Record& r) { return r.stable; });
+  const auto& tol = cfg.tolerance("extrapolated_deflection_rel_error");
+  fine.metrics.clear();
+  fine.add_metric("extrapolated_deflection_rel_error", all_stable ? std::abs(ex.value - theory) / theory : NAN,
+                  tol.value, tol.why);
+  return out;
+}
+
+}  // namespace geosph::verify

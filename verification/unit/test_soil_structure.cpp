@@ -1,0 +1,112 @@
+// Soil-structure contact (coupling/soil_structure_contact.hpp) and prescribed rigid motion
+// (structure/rigid_motion.hpp): a stiff soil block on a rigid slab under tilted gravity slides with
+// the Coulomb acceleration g (sin theta - tan delta cos theta) or sticks when tan delta > tan theta;
+// a rigid body translated and rotated follows its prescribed path exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "coupling/soil_structure_contact.hpp"
+#include "io/scene.hpp"
+#include "sim/simulation.hpp"
+
+using namespace geosph;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Block of stiff elastic "soil" resting on a rigid slab (held in place by a zero prescribed motion);
+// gravity tilted by theta emulates an incline of angle theta.
+Scene sliding_scene(double theta_deg, double delta_deg, double t_end) {
+  const double g = 9.81, th = theta_deg * kDeg;
+  json j = json::parse(R"({
+    "name": "slide", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-0.1, -0.1], "max": [1.2, 0.2]},
+    "time": {"end": 0.2},
+    "materials": {
+      "block": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3},
+      "slab": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3}
+    },
+    "bodies": [
+      {"material": "block", "shape": "box", "min": [0, 0], "max": [0.1, 0.05]},
+      {"material": "slab", "shape": "box", "min": [-0.05, -0.05], "max": [1.1, 0], "structure": true,
+       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
+    ]
+  })");
+  j["gravity"] = {g * std::sin(th), -g * std::cos(th)};
+  j["time"]["end"] = t_end;
+  j["bodies"][1]["interface_friction_angle"] = delta_deg;
+  return parse_scene(j, "slide.json");
+}
+
+double mean_soil_vx(const Simulation& sim) {
+  const Particles& P = sim.particles();
+  double s = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) { s += P.vx[i]; ++n; }
+  return s / static_cast<double>(n);
+}
+
+}  // namespace
+
+TEST(SoilStructureContact, BlockSlidesWithTheCoulombAcceleration) {
+  const double theta = 30, delta = 15, t = 0.2;
+  Simulation sim(sliding_scene(theta, delta, t));
+  sim.run();
+  const double a = 9.81 * (std::sin(theta * kDeg) - std::tan(delta * kDeg) * std::cos(theta * kDeg));
+  // the block's own elastic settling and the contact's one-step closure delay sliding by a few steps
+  EXPECT_NEAR(mean_soil_vx(sim), a * t, 0.03 * a * t);
+  // the slab carries the block's weight normal to it and the friction force along it
+  const auto F = SoilStructureContact::body_force(sim.particles(), 1);
+  const double W = 2000 * 0.1 * 0.05 * 9.81;
+  EXPECT_NEAR(-F[1], W * std::cos(theta * kDeg), 0.05 * W);
+  EXPECT_NEAR(F[0], std::tan(delta * kDeg) * -F[1], 0.05 * W);
+}
+
+TEST(SoilStructureContact, FrictionHoldsTheBlockWhenDeltaExceedsTheSlope) {
+  const double theta = 20, delta = 35, t = 0.2;
+  Simulation sim(sliding_scene(theta, delta, t));
+  sim.run();
+  EXPECT_LT(std::abs(mean_soil_vx(sim)), 0.01 * 9.81 * std::sin(theta * kDeg) * t);
+}
+
+TEST(SoilStructureContact, SoilDoesNotPenetrateTheStructure) {
+  Simulation sim(sliding_scene(0, 0, 0.2));
+  sim.run();
+  const Particles& P = sim.particles();
+  double ymin = 1e9;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) ymin = std::min(ymin, P.y[i]);
+  EXPECT_GT(ymin, 0.5 * 0.01 - 0.1 * 0.01);  // bottom row centre dx/2 above the slab, within 0.1 dx
+}
+
+TEST(RigidMotion, TranslationAndRotationFollowThePrescribedPath) {
+  json j = json::parse(R"({
+    "name": "rigid", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-1, -1], "max": [1, 1]},
+    "time": {"end": 0.5},
+    "materials": {"steel": {"model": "linear_elastic", "density": 7800, "young_modulus": 2e8, "poisson_ratio": 0.3}},
+    "bodies": [{"material": "steel", "shape": "box", "min": [-0.05, -0.2], "max": [0.05, 0.2], "structure": true,
+                "motion": {"velocity": [0.2, 0], "angular_velocity": 0.5, "centre": [0, -0.2]}}]
+  })");
+  Simulation sim(parse_scene(j, "rigid.json"));
+  const Particles& P0 = sim.particles();
+  std::vector<std::array<double, 2>> x0(P0.size());
+  for (std::size_t i = 0; i < P0.size(); ++i) x0[static_cast<std::size_t>(P0.id[i])] = {P0.x[i], P0.y[i]};
+  sim.run();
+  const double t = sim.time(), th = 0.5 * t;
+  const Particles& P = sim.particles();
+  double err = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const auto& q = x0[static_cast<std::size_t>(P.id[i])];
+    const double rx = q[0], ry = q[1] + 0.2;  // relative to the centre (0, -0.2)
+    const double ex = 0.2 * t + std::cos(th) * rx - std::sin(th) * ry, ey = -0.2 + std::sin(th) * rx + std::cos(th) * ry;
+    err = std::max(err, std::hypot(P.x[i] - ex, P.y[i] - ey));
+  }
+  EXPECT_LT(err, 1e-9);
+  EXPECT_NEAR(sim.rigid_motions()->rotation(0), th, 1e-12);
+}
