@@ -48,6 +48,8 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
   const double* ny = P.field(ContactFields::ny).data();
   const double* nz = P.field(ContactFields::nz).data();
   const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  // a structure particle that the contact force moves: deformable, not held by a clamp
+  const auto free_structure = [&](std::size_t j) { return P.kind[j] == Kind::Structure && !(fixed && fixed[j] > 0); };
   const double dx0 = scene_.dx;
   partner_.assign(n, -1);
   force_.resize(n);
@@ -65,10 +67,9 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
     const double nrm[3] = {nx[j], ny[j], nz[j]};
     const double gap = (P.x[i] - P.x[j]) * nrm[0] + (P.y[i] - P.y[j]) * nrm[1] + (P.z[i] - P.z[j]) * nrm[2] - dx0;
     if (gap > 0.5 * dx0) continue;
-    const bool rigid = P.kind[j] == Kind::RigidStructure || (fixed && fixed[j] > 0);
+    const bool rigid = !free_structure(j);  // prescribed motion (its velocity) or clamped (held at rest)
     double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
-    if (fixed && fixed[j] > 0) vj[0] = vj[1] = vj[2] = 0;
-    else if (!rigid) { vj[0] += dt * P.ax[j]; vj[1] += dt * P.ay[j]; vj[2] += dt * P.az[j]; }
+    if (!rigid) { vj[0] += dt * P.ax[j]; vj[1] += dt * P.ay[j]; vj[2] += dt * P.az[j]; }
     const double u[3] = {P.vx[i] + dt * P.ax[i] - vj[0], P.vy[i] + dt * P.ay[i] - vj[1], P.vz[i] + dt * P.az[i] - vj[2]};
     const double un = u[0] * nrm[0] + u[1] * nrm[1] + u[2] * nrm[2];
     const double target = gap >= 0 ? -gap / dt : -kPenetrationRecovery * gap / dt;
@@ -96,7 +97,7 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
     const auto j = static_cast<std::size_t>(partner_[i]);
     const auto& F = force_[i];
     fx[j] -= F[0]; fy[j] -= F[1]; fz[j] -= F[2];
-    if (P.kind[j] == Kind::Structure && !(fixed && fixed[j] > 0)) {
+    if (free_structure(j)) {
       P.ax[j] -= F[0] / P.m[j]; P.ay[j] -= F[1] / P.m[j]; P.az[j] -= F[2] / P.m[j];
     }
   }
@@ -105,10 +106,11 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
 std::array<double, 3> SoilStructureContact::body_force(const Particles& P, std::size_t body) {
   std::array<double, 3> F{0, 0, 0};
   if (!P.has_field(ContactFields::fx)) return F;
-  const auto& b = const_cast<Particles&>(P).field("structure_body");
-  const auto& fx = const_cast<Particles&>(P).field(ContactFields::fx);
-  const auto& fy = const_cast<Particles&>(P).field(ContactFields::fy);
-  const auto& fz = const_cast<Particles&>(P).field(ContactFields::fz);
+  const auto& fields = P.extra_fields();
+  const auto& b = fields.at("structure_body");
+  const auto& fx = fields.at(ContactFields::fx);
+  const auto& fy = fields.at(ContactFields::fy);
+  const auto& fz = fields.at(ContactFields::fz);
   for (std::size_t j = 0; j < P.size(); ++j)
     if (static_cast<std::size_t>(b[j]) == body + 1) { F[0] += fx[j]; F[1] += fy[j]; F[2] += fz[j]; }
   return F;

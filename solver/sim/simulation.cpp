@@ -1,7 +1,6 @@
 #include "sim/simulation.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "boundary/geometry.hpp"
 #include "io/json_fields.hpp"
@@ -59,10 +58,9 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
 }
 
 std::array<double, 3> Simulation::gravity_at(double t) const {
-  double f = 1.0;
-  if (scene_.gravity_ramp > 0 && t < scene_.gravity_ramp)
-    f = scene_.gravity_ramp_from + (1.0 - scene_.gravity_ramp_from) * 0.5 *
-                                       (std::sin((-0.5 + t / scene_.gravity_ramp) * std::numbers::pi) + 1.0);
+  const double f = scene_.gravity_ramp > 0 && t < scene_.gravity_ramp
+                       ? scene_.gravity_ramp_from + (1.0 - scene_.gravity_ramp_from) * smooth_start(t, scene_.gravity_ramp)
+                       : 1.0;
   return {f * scene_.gravity[0], f * scene_.gravity[1], f * scene_.gravity[2]};
 }
 

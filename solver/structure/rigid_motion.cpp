@@ -1,7 +1,7 @@
 #include "structure/rigid_motion.hpp"
 
 #include <cmath>
-#include <numbers>
+#include "core/time_step.hpp"
 
 namespace geosph {
 
@@ -23,14 +23,9 @@ RigidMotions::RigidMotions(const Scene& scene) : scene_(scene), state_(scene.bod
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) state_[b].centre = scene.bodies[b].motion.centre;
 }
 
-double RigidMotions::ramp_factor(const BodySpec::Motion& m, double t) const {
-  if (m.ramp <= 0 || t >= m.ramp) return 1.0;
-  return 0.5 * (std::sin((-0.5 + t / m.ramp) * std::numbers::pi) + 1.0);
-}
-
 void RigidMotions::set_velocities(Particles& P, double t) const {
   for_each_rigid(P, scene_, [&](std::size_t i, std::size_t b, const BodySpec::Motion& m) {
-    const double f = ramp_factor(m, t);
+    const double f = smooth_start(t, m.ramp);
     const auto& c = state_[b].centre;
     P.vx[i] = f * (m.velocity[0] - m.angular_velocity * (P.y[i] - c[1]));
     P.vy[i] = f * (m.velocity[1] + m.angular_velocity * (P.x[i] - c[0]));
@@ -40,7 +35,7 @@ void RigidMotions::set_velocities(Particles& P, double t) const {
 
 void RigidMotions::advance(Particles& P, double t, double dt) {
   for_each_rigid(P, scene_, [&](std::size_t i, std::size_t b, const BodySpec::Motion& m) {
-    const double f = ramp_factor(m, t + 0.5 * dt);
+    const double f = smooth_start(t + 0.5 * dt, m.ramp);
     const double th = f * m.angular_velocity * dt;
     const auto& c = state_[b].centre;
     const double rx = P.x[i] - c[0], ry = P.y[i] - c[1];
@@ -51,7 +46,7 @@ void RigidMotions::advance(Particles& P, double t, double dt) {
   for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
     const auto& m = scene_.bodies[b].motion;
     if (!scene_.bodies[b].is_rigid_structure()) continue;
-    const double f = ramp_factor(m, t + 0.5 * dt);
+    const double f = smooth_start(t + 0.5 * dt, m.ramp);
     for (int a = 0; a < 3; ++a) {
       state_[b].centre[a] += f * m.velocity[a] * dt;
       state_[b].displacement[a] += f * m.velocity[a] * dt;

@@ -1,7 +1,6 @@
 // Prescribed rigid motion of structure bodies (a retaining wall translated or rotated at a set rate).
 // Each rigid body has a reference point c(t) moving with f(t) V and turns about it with f(t) omega
-// (2D, about z), f(t) a smooth start from 0 to 1 over `ramp` seconds (the same sine ramp as gravity,
-// Adami et al. 2012, eq. 33). Positions advance exactly for the step's rotation:
+// (2D, about z), f(t) = smooth_start(t, ramp) (core/time_step.hpp, the same ramp as gravity's). Positions advance exactly for the step's rotation:
 //   x <- c + R(f omega dt) (x - c) + f V dt,   c <- c + f V dt   (f at mid-step),
 // and the velocity v = f (V + omega e_z x (x - c)) is what the contact sees.
 #pragma once
@@ -24,7 +23,6 @@ class RigidMotions {
   // Accumulated translation of body b's reference point and its rotation [rad] so far.
   std::array<double, 3> displacement(std::size_t body) const { return state_[body].displacement; }
   double rotation(std::size_t body) const { return state_[body].angle; }
-  double ramp_factor(const BodySpec::Motion& m, double t) const;
 
  private:
   struct State {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "harness/catalogue.hpp"
 #include "harness/metrics.hpp"
@@ -44,7 +45,7 @@ Beam beam_theory(const Scene& scene) {
 Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   Scene scene = cfg.scene(spacing);
   const Beam b = beam_theory(scene);
-  const double T = 2.0 * M_PI / b.omega;
+  const double T = 2.0 * std::numbers::pi / b.omega;
   scene.gravity_ramp = cfg.spec.at("periods_ramp").get<double>() * T;
   const double t_avg = scene.gravity_ramp;
   scene.t_end = t_avg + cfg.spec.at("periods_average").get<double>() * T;
