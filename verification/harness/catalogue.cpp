@@ -13,6 +13,7 @@
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
 #include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
 #include "cases/strip_footing/strip_footing.hpp"
+#include "cases/structure_sliding/structure_sliding.hpp"
 
 namespace geosph::verify {
 
@@ -31,6 +32,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"cantilever_beam", run_cantilever_beam},
       {"rankine_active", run_rankine_active},
       {"rankine_passive", run_rankine_passive},
+      {"structure_sliding", run_structure_sliding},
   };
   return cases;
 }
