@@ -21,10 +21,13 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
         double* wvz = no_slip_ ? P.field("wall_vz").data() : nullptr;
         const auto& eos = fluid_.eos();
         const double volume = std::pow(scene_.dx, scene_.dim);
+        // pore water (two-phase): rho is the partial density n rho_w; the wall takes the porosity of its
+        // water neighbours and the intrinsic density in the hydrostatic term
+        double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
-          double sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0;
+          double sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0, sn = 0;
           double wmax = -1;
           std::uint16_t mat = 0;
           cells.for_each_neighbor(P, w, [&](std::uint32_t f, double dx, double dy, double dz, double r2) {
@@ -32,7 +35,9 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
             const double W = kernel.W(std::sqrt(r2));
             sw += W;
             sp += P.p[f] * W;
-            const double rw = P.rho[f] * W;
+            const double nf = por ? por[f] : 1.0;
+            sn += nf * W;
+            const double rw = P.rho[f] / nf * W;
             srx += rw * dx; sry += rw * dy; srz += rw * dz;
             svx += P.vx[f] * W; svy += P.vy[f] * W; svz += P.vz[f] * W;
             if (W > wmax) { wmax = W; mat = P.material[f]; }
@@ -42,6 +47,10 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
             // fixed walls: a_w = 0
             P.p[w] = (sp + g[0] * srx + g[1] * sry + g[2] * srz) / sw;
             P.rho[w] = e.density(P.p[w]);
+            if (por) {
+              por[w] = sn / sw;
+              P.rho[w] *= por[w];
+            }
             P.m[w] = P.rho[w] * volume;
             if (no_slip_) {
               wvx[w] = 2.0 * P.vx[w] - svx / sw;
@@ -51,6 +60,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
           } else {
             P.p[w] = e.p_bg;
             P.rho[w] = e.rho0;
+            if (por) por[w] = 1.0;
             P.m[w] = e.rho0 * volume;
             if (no_slip_) { wvx[w] = P.vx[w]; wvy[w] = P.vy[w]; wvz[w] = P.vz[w]; }
           }

@@ -30,7 +30,7 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
 
 // Soil body on the lattice. "geostatic": vertical stress -rho g depth and horizontal K0 times it
 // (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement); "isotropic":
-// sigma = -pressure I. Modified Cam Clay: the preconsolidation pressure is OCR times that of the
+// sigma = -pressure I (saturated soil: effective stresses, from the buoyant weight). Modified Cam Clay: the preconsolidation pressure is OCR times that of the
 // yield locus through the initial stress (p' floored at min_pressure at the free surface).
 // Structure bodies are built the same way (at rest) as Kind::Structure, or Kind::RigidStructure when
 // their motion is prescribed, and carry their body number + 1 in the field "structure_body".
@@ -43,16 +43,23 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
   const double g = -s.gravity[up] * s.initial_gravity_factor();  // geostatic state at the gravity of t = 0
   const double k0 = b.k0 > 0 ? b.k0 : m.poisson / (1.0 - m.poisson);
   const bool geostatic = b.initial == "geostatic", isotropic = b.initial == "isotropic";
+  // saturated soil: the effective stress carries the buoyant weight (rho_d - (1 - n0) rho_w) g
+  const double rho_geo = m.saturated() && s.has_fluid() ? m.density - (1.0 - m.porosity) * s.materials.front().density
+                                                        : m.density;
   lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
     const Kind kind = !b.structure ? Kind::Soil : b.motion.active ? Kind::RigidStructure : Kind::Structure;
     P.add(x, y, z, m.density * vol, m.density, kind, mat);
     if (b.structure) P.field("structure_body").back() = static_cast<double>(body_index + 1);
     if (b.fixed) P.field("fixed").back() = 1.0;
+    if (b.surcharge.pressure > 0 && (up == 1 ? y : z) > b.hi[up] - s.dx) {  // top row carries the surcharge
+      P.field("surcharge").back() = b.surcharge.pressure;
+      P.field("surcharge_ramp").back() = b.surcharge.ramp;
+    }
     else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
     const std::size_t i = P.size() - 1;
     if (geostatic) {
       const double depth = b.hi[up] - (up == 1 ? y : z);
-      const double sv = -m.density * g * depth;
+      const double sv = -rho_geo * g * depth;
       P.field(SoilFields::xx)[i] = k0 * sv;
       P.field(up == 1 ? SoilFields::yy : SoilFields::zz)[i] = sv;
       P.field(up == 1 ? SoilFields::zz : SoilFields::yy)[i] = k0 * sv;

@@ -9,14 +9,14 @@ namespace geosph {
 SoilWalls::SoilWalls(const Scene& scene) : scene_(scene), no_slip_(scene.walls.slip == "no_slip") {}
 
 void SoilWalls::allocate(Particles& P) const {
-  P.field("wall_vx"); P.field("wall_vy"); P.field("wall_vz");
+  P.field("soil_wall_vx"); P.field("soil_wall_vy"); P.field("soil_wall_vz");
 }
 
 void SoilWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();
-        double* wv[3] = {P.field("wall_vx").data(), P.field("wall_vy").data(), P.field("wall_vz").data()};
+        double* wv[3] = {P.field("soil_wall_vx").data(), P.field("soil_wall_vy").data(), P.field("soil_wall_vz").data()};
         double* s[6] = {P.field(SoilFields::xx).data(), P.field(SoilFields::yy).data(), P.field(SoilFields::zz).data(),
                         P.field(SoilFields::xy).data(), P.dim == 3 ? P.field(SoilFields::xz).data() : nullptr,
                         P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr};
@@ -24,6 +24,9 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         const double volume = std::pow(scene_.dx, scene_.dim);
         const double shear_sign = no_slip_ ? 1.0 : -1.0;
         const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
+        // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
+        const double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;
+        const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
@@ -34,7 +37,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             const double W = kernel.W(std::sqrt(r2));
             sw += W;
             for (int c = 0; c < ncomp; ++c) ss[c] += s[c][k] * W;
-            const double rw = P.rho[k] * W;
+            const double rw = (por ? P.rho[k] - (1.0 - por[k]) * rho_w : P.rho[k]) * W;
             sr[0] += rw * dx; sr[1] += rw * dy; sr[2] += rw * dz;
             sv[0] += P.vx[k] * W; sv[1] += P.vy[k] * W; sv[2] += P.vz[k] * W;
             sd[0] += W * dx; sd[1] += W * dy; sd[2] += W * dz;

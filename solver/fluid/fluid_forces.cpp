@@ -25,11 +25,19 @@ double FluidForces::max_kinematic_viscosity() const {
   return nu;
 }
 
+// Pore water (coupling/seepage.hpp): rho is the partial density n rho_w; the pressure follows the
+// intrinsic density rho / n.
 void FluidForces::update_pressure(Particles& P) const {
   const std::size_t n = P.size();
+  const double* por = porosity(P);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    if (P.kind[i] == Kind::Fluid) P.p[i] = eos_[P.material[i]].pressure(P.rho[i]);
+    if (P.kind[i] == Kind::Fluid) P.p[i] = eos_[P.material[i]].pressure(por ? P.rho[i] / por[i] : P.rho[i]);
+}
+
+const double* FluidForces::porosity(const Particles& P) const {
+  if (!scene_.two_phase()) return nullptr;
+  return P.extra_fields().at("porosity").data();
 }
 
 void FluidForces::continuity(Particles& P, const CellList& cells) const {
@@ -44,21 +52,25 @@ template <class K>
 void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList& cells) const {
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
+  const double* por = porosity(P);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
     const FluidMaterial& mi = mats_[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double delta_hc = mi.density_diffusion * h * mi.sound_speed;
+    const double ni = por ? por[i] : 1.0;
     double drho = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
-      if (kj == Kind::RepulsiveWall) return;
+      if (kj != Kind::Fluid && kj != Kind::DummyWall) return;  // the skeleton acts through coupling/seepage
       const double fw = kernel.gradW_over_r(std::sqrt(r2));  // grad_i W_ij = fw * r_ij
       const double mj = P.m[j];
       // walls enter with their own (prescribed) velocity, zero for fixed walls
       drho += mj * fw * ((vxi - P.vx[j]) * dx + (vyi - P.vy[j]) * dy + (vzi - P.vz[j]) * dz);
-      if (kj == Kind::Fluid && delta_hc > 0) drho += delta_hc * 2.0 * (rhoi - P.rho[j]) * fw * r2 / (r2 + eta2) * mj / P.rho[j];
+      // pore water: the diffusion acts on the intrinsic density (rho/n), scaled back by n_i
+      if (kj == Kind::Fluid && delta_hc > 0)
+        drho += delta_hc * 2.0 * (rhoi - (por ? ni * P.rho[j] / por[j] : P.rho[j])) * fw * r2 / (r2 + eta2) * mj / P.rho[j];
     });
     P.drho[i] = drho;
   }
@@ -85,6 +97,7 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
   double* pr2 = pressure_over_rho2_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) pr2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
+  const double* por = porosity(P);
 
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
@@ -94,9 +107,11 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
     const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double alpha_c = mi.artificial_viscosity * mi.sound_speed;
     const double mu_i = rhoi * mi.kinematic_viscosity;
+    const double ni = por ? por[i] : 1.0;  // pore water: -n grad p / (n rho_w)
     double ax = 0, ay = 0, az = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
+      if (kj != Kind::Fluid && kj != Kind::DummyWall && kj != Kind::RepulsiveWall) return;
       if (kj == Kind::RepulsiveWall) {
         if (r2 < r0 * r0 && r2 > 0) {
           const double s2 = r0 * r0 / r2, s4 = s2 * s2, s12 = s4 * s4 * s4;
@@ -109,7 +124,7 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
       const double mj = P.m[j], rhoj = P.rho[j];
       const double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
-      double coef = mj * (pi_r2 + pr2[j]);
+      double coef = ni * mj * (pi_r2 + pr2[j]);
       const bool wall = kj == Kind::DummyWall;
       if (!(wall && free_slip_walls_)) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
         double vx = ux, vy = uy, vz = uz;

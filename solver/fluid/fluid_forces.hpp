@@ -8,6 +8,8 @@
 //                laminar viscosity  sum_j m_j (mu_i + mu_j) r_ij.grad_i W_ij / (rho_i rho_j (r^2 + eta^2)) v_ij
 //                                                              (Morris, Fox & Zhu 1997, eq. 10)
 //   repulsive walls  f = D [(r0/r)^12 - (r0/r)^4] r_ij / r^2 for r < r0      (Monaghan 1994, eq. 6.1)
+// Pore water (two-phase scenes, coupling/seepage.hpp): rho is the partial density n rho_w, p follows
+// rho/n, and the pressure term is multiplied by n_i (-n grad p / (n rho_w)).
 // with eta^2 = 0.01 h^2 (1e-4 h^2 in the laminar term, see fluid_forces.cpp). Dummy wall particles enter with the pressure, density and (no-slip)
 // velocity extrapolated by DummyWalls (Adami, Hu & Adams 2012).
 #pragma once
@@ -40,6 +42,9 @@ class FluidForces {
   void continuity_with(const K& kernel, Particles& P, const CellList& cells) const;
   template <class K>
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+
+  // porosity of the pore water (two-phase scenes, coupling/seepage.hpp), else null
+  const double* porosity(const Particles& P) const;
 
   const Scene& scene_;
   std::vector<TaitEos> eos_;

@@ -70,6 +70,19 @@ SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
   if (m.dilatancy_angle > m.friction_angle)
     f.fail("dilatancy_angle", "must not exceed friction_angle (" + std::to_string(m.friction_angle) + " deg), got " +
                                   std::to_string(m.dilatancy_angle));
+  if (m.model != "von_mises") {  // saturated soil (two-phase); linear_elastic: an elastic skeleton
+    m.porosity = f.number("porosity", Range::open(0, 1), 0.0);
+    if (f.has("hydraulic_conductivity") || f.has("grain_size")) {
+      if (!m.saturated()) f.fail("porosity", "is required with hydraulic_conductivity or grain_size (saturated soil)");
+      if (f.has("hydraulic_conductivity") && f.has("grain_size"))
+        f.fail("grain_size", "give either hydraulic_conductivity or grain_size, not both");
+      if (f.has("hydraulic_conductivity")) m.hydraulic_conductivity = f.number("hydraulic_conductivity", Range::positive());
+      else m.grain_size = f.number("grain_size", Range::positive());
+    } else if (m.saturated()) {
+      f.fail("hydraulic_conductivity", "is missing: saturated soil (porosity given) needs hydraulic_conductivity [m/s] > 0 "
+                                       "or grain_size [m] > 0 (Kozeny-Carman)");
+    }
+  }
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
   m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
   if (auto a = f.optional_object("artificial_stress")) {
@@ -182,6 +195,12 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
                               "\": the model needs an initial mean effective stress p' > 0, and \"rest\" gives p' = 0");
       body.ocr = b.number("ocr", Range{1, 1000, false, false}, 1.0);
     }
+    if (auto sc = b.optional_object("surcharge")) {
+      if (!is_soil || body.structure) b.fail("surcharge", "is only allowed on soil bodies");
+      body.surcharge.pressure = sc->number("pressure", Range::positive());
+      body.surcharge.ramp = sc->number("ramp", Range::non_negative(), 0.0);
+      sc->reject_unknown();
+    }
     body.velocity = b.vector("velocity", d, {0, 0, 0});
     body.fixed = b.boolean("fixed", false);
     if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
@@ -281,6 +300,47 @@ static void validate_structures(const Scene& s) {
   }
 }
 
+// Fluid and soil meet only as a saturated soil and its pore water: every soil body in a scene with
+// a fluid must be saturated (porosity given) and lie inside a fluid body, which fills its pores;
+// one fluid material (the pore water).
+static void validate_two_phase(const Scene& s) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw InputError(s.file + ": field '" + field + "': " + what);
+  };
+  if (!s.has_fluid()) {
+    for (const auto& m : s.soils)
+      if (m.saturated())
+        fail("materials." + m.name + ".porosity", "saturated soil needs its pore water: the scene has no fluid material");
+    return;
+  }
+  if (!s.has_soil()) return;
+  for (const auto& b : s.bodies)
+    if (b.structure) return;  // rejected with its own message in validate_structures
+  if (s.materials.size() > 1) fail("materials", "a two-phase scene (saturated soil) takes one fluid, its pore water");
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    const BodySpec& b = s.bodies[k];
+    const SoilMaterial* m = nullptr;
+    for (const auto& sm : s.soils)
+      if (sm.name == b.material) m = &sm;
+    if (!m || b.structure) continue;
+    const std::string field = "bodies[" + std::to_string(k) + "]";
+    if (!m->saturated())
+      fail("materials." + m->name + ".porosity",
+           "is missing: soil in a scene with a fluid is a saturated soil and needs its porosity in (0, 1) (and "
+           "hydraulic_conductivity or grain_size)");
+    bool inside = false;
+    for (const auto& w : s.bodies) {
+      if (w.material != s.materials.front().name) continue;
+      bool in = true;
+      for (int a = 0; a < s.dim; ++a) in = in && w.lo[a] <= b.lo[a] + 1e-12 && w.hi[a] >= b.hi[a] - 1e-12;
+      inside = inside || in;
+    }
+    if (!inside)
+      fail(field, "the saturated soil body must lie inside a body of the fluid \"" + s.materials.front().name +
+                      "\" (its pore water)");
+  }
+}
+
 void validate_scene(const Scene& s) {
   auto fail = [&](const std::string& field, const std::string& what) {
     throw InputError(s.file + ": field '" + field + "': " + what);
@@ -318,6 +378,8 @@ void validate_scene(const Scene& s) {
         fail("walls.blocks[" + std::to_string(c) + "]", std::string("extends outside the domain along ") + axes[a]);
   if (s.gravity_ramp > s.t_end) fail("time.gravity_ramp", "must not exceed time.end");
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    if (s.bodies[b].surcharge.ramp > s.t_end) fail("bodies[" + std::to_string(b) + "].surcharge.ramp", "must not exceed time.end");
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
     if (s.bodies[b].initial == "geostatic")
       for (int a = 0; a < s.dim - 1; ++a)
         if (s.gravity[a] != 0 || s.gravity[s.dim - 1] > 0)
@@ -331,8 +393,7 @@ void validate_scene(const Scene& s) {
              "\"geostatic\" without gravity at t = 0 gives p' = 0, but the modified_cam_clay material \"" + m.name +
                  "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
   validate_structures(s);
-  if (s.has_fluid() && s.has_soil() && s.has_walls())
-    fail("materials", "fluid and soil in one scene with walls is not supported yet (two-phase coupling is a later module)");
+  validate_two_phase(s);
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")
     fail("walls.type", "soil needs dummy walls (they carry the soil's stress); repulsive walls are for fluids only");
 }

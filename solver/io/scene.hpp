@@ -47,6 +47,14 @@ struct SoilMaterial {
   double void_ratio = 0;              // e > 0 (v = 1 + e held constant: small-strain form)
   double min_pressure = 100;          // p'_min [Pa]: floor on p' in the moduli (free surfaces)
   bool is_cam_clay() const { return model == "modified_cam_clay"; }
+  // Saturated soil (two-phase, coupling/seepage.hpp): the skeleton's initial porosity n0 in (0, 1);
+  // `density` is then the dry (partial) density (1 - n0) rho_s of the skeleton. The hydraulic
+  // conductivity follows Kozeny-Carman, from its value at n0 or from the grain size.
+  double porosity = 0;                // n0; 0 = dry soil (no pore water)
+  double hydraulic_conductivity = 0;  // k at n0 [m/s] (0: from grain_size)
+  double grain_size = 0;              // d [m], Kozeny-Carman with the 180 constant (0: from hydraulic_conductivity)
+  bool saturated() const { return porosity > 0; }
+  double grain_density() const { return density / (1.0 - porosity); }  // rho_s
   double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
   double artificial_viscosity_beta = 0.0;
   double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
@@ -70,6 +78,12 @@ struct BodySpec {
   double k0 = -1;                     // geostatic K0; < 0: nu/(1 - nu) (elastic, laterally confined)
   double pressure = 0;                // isotropic: initial mean effective stress p' [Pa]
   double ocr = 1;                     // modified_cam_clay: p_c = OCR x (p_c of the yield locus through the initial stress)
+  // Surcharge: a vertical pressure on the body's top particle row (a fill, a footing load; permeable:
+  // pore water drains through it), reaching `pressure` over `ramp` seconds with a smooth start.
+  struct Surcharge {
+    double pressure = 0;               // [Pa], downward
+    double ramp = 0;                   // [s]
+  } surcharge;
   std::array<double, 3> velocity{};
   bool fixed = false;                 // held in place (velocity zero) but otherwise part of the material,
                                       // e.g. the clamped root of a plate (Gray, Monaghan & Swift 2001)
@@ -132,6 +146,13 @@ struct Scene {
   std::vector<BodySpec> bodies;
   WallSpec walls;
   bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty(); }
+  // Saturated soil and its pore water (the scene's fluid) as two particle sets (coupling/seepage.hpp).
+  bool two_phase() const {
+    if (!has_fluid()) return false;
+    for (const auto& m : soils)
+      if (m.saturated()) return true;
+    return false;
+  }
 
   double h() const { return h_over_dx * dx; }
   double support() const { return kernel_support_factor(kernel) * h(); }

@@ -43,6 +43,10 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     contact_ = std::make_unique<SoilStructureContact>(scene_);
     contact_->allocate(P_);
   }
+  if (scene_.two_phase()) {
+    seepage_ = std::make_unique<Seepage>(scene_);
+    seepage_->allocate(P_);
+  }
   bounds_.max_density_variation = scene_.max_density_variation;
   limits_ = {scene_.cfl, scene_.force_factor, scene_.viscous_factor};
   const long outside = cells_.build(P_, scene_.domain, scene_.support());
@@ -51,6 +55,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
                      std::to_string(P_.x[outside]) + ", " + std::to_string(P_.y[outside]) + ", " +
                      std::to_string(P_.z[outside]) + ") starts outside the domain");
   neighbour_search();
+  if (seepage_) seepage_->initialise(P_, cells_);
   choose_time_step();  // acoustic limit only (nothing moves yet): the contact needs the step length
   forces();
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
@@ -80,24 +85,59 @@ void Simulation::neighbour_search() {
   }
 }
 
+// Wall particles serve each phase in turn (soil, then fluid: the fluid's wall values are the ones the
+// next continuity step reads); the seepage coupling reads the water walls' pressure.
 void Simulation::forces() {
   const auto g = gravity_at(t_);
+  if (seepage_) seepage_->update_porosity(P_, cells_);
+  if (soil_) {
+    if (soil_walls_) soil_walls_->update(P_, cells_, g);
+    soil_->momentum(P_, cells_, g);
+  }
   if (fluid_) {
     fluid_->update_pressure(P_);
     if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
     fluid_->momentum(P_, cells_, g);
   }
-  if (soil_) {
-    if (soil_walls_) soil_walls_->update(P_, cells_, g);
-    soil_->momentum(P_, cells_, g);
-  }
+  if (P_.has_field("surcharge")) apply_surcharge();
+  if (seepage_) seepage_->apply(P_, cells_);  // after every other force: the drag pairs their sums
   if (contact_) contact_->apply(P_, cells_, dt_);
+}
+
+// Surcharge pressure q on a soil body's top row: force q dx^(d-1) per particle, downward, ramped.
+void Simulation::apply_surcharge() {
+  const double* q = P_.field("surcharge").data();
+  const double* ramp = P_.field("surcharge_ramp").data();
+  const double area = std::pow(scene_.dx, scene_.dim - 1);
+  std::vector<double>& a = scene_.dim == 2 ? P_.ay : P_.az;
+  for (std::size_t i = 0; i < P_.size(); ++i)
+    if (q[i] > 0) {
+      const double f = ramp[i] > 0 && t_ < ramp[i] ? smooth_start(t_, ramp[i]) : 1.0;
+      a[i] -= f * q[i] * area / P_.m[i];
+    }
+}
+
+void Simulation::kick(double half) {
+  auto& P = P_;
+  const std::size_t n = P.size();
+  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  const double* C = seepage_ ? P.field(SeepageFields::drag_c).data() : nullptr;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
+    if (C && C[i] > 0) {
+      seepage_->kick(P, i, half);
+    } else {
+      P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
+    }
+  }
 }
 
 void Simulation::choose_time_step() {
   TimeStepInput in;
   in.h = scene_.h();
   in.c_max = std::max(fluid_ ? fluid_->max_sound_speed() : 0.0, soil_ ? soil_->max_wave_speed() : 0.0);
+  if (seepage_) in.c_max = std::max(in.c_max, seepage_->undrained_wave_speed(soil_->max_wave_speed()));
   in.v_max = state_.v_max;
   in.a_max = state_.a_max;
   in.nu_max = fluid_ ? fluid_->max_kinematic_viscosity() : 0.0;
@@ -110,8 +150,9 @@ void Simulation::step() {
   const double half = 0.5 * dt_, dt = dt_;
   const auto& dom = scene_.domain;
   auto& P = P_;
-  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;  // re-read after reordering
+  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
   const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
+  kick(half);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity
@@ -119,7 +160,6 @@ void Simulation::step() {
       continue;
     }
     if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
-    P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
     P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
     double* q[3] = {&P.x[i], &P.y[i], &P.z[i]};
     for (int a = 0; a < dom.dim; ++a) {
@@ -133,17 +173,16 @@ void Simulation::step() {
   ++step_;
   neighbour_search();
   if (fluid_) fluid_->continuity(P_, cells_);
+  if (seepage_) seepage_->porosity_rate(P_, cells_);
+  // two-phase: the walls hold the water's values from forces(); the soil's continuity needs its own
+  if (seepage_ && soil_walls_) soil_walls_->update(P_, cells_, gravity_at(t_));
   if (soil_) soil_->update_stress(P_, cells_, dt, step_, t_);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
     if (is_moving(P.kind[i])) P.rho[i] += dt * P.drho[i];
+  if (seepage_) seepage_->advance_porosity(P_, dt);
   forces();
-  if (fixed) fixed = P.field("fixed").data();  // neighbour_search may have reordered the particles
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
-    P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
-  }
+  kick(half);
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();
 }

@@ -1,7 +1,7 @@
 // The time loop. Builds only the modules the scene declares (fluid forces for fluid materials,
 // soil stress and forces for soil and structure solids, each phase's wall extrapolation only if the
 // scene has dummy walls, the prescribed motion of rigid structures, soil-structure contact when both
-// are present) and advances them with a kick-drift-kick scheme:
+// are present, the seepage coupling of saturated soil and its pore water) and advances them with a kick-drift-kick scheme:
 //   v^{n+1/2} = v^n + dt/2 a^n,   x^{n+1} = x^n + dt v^{n+1/2},
 //   Drho (and, for soil, the strain and spin increments) from (x^{n+1}, v^{n+1/2}):
 //   rho^{n+1} = rho^n + dt Drho,  sigma^{n+1} = return_map(sigma^n + Jaumann increment),
@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "boundary/dummy_wall.hpp"
+#include "coupling/seepage.hpp"
 #include "coupling/soil_structure_contact.hpp"
 #include "boundary/soil_wall.hpp"
 #include "core/cell_list.hpp"
@@ -44,6 +45,8 @@ class Simulation {
   std::size_t structure_count() const { return n_structure_; }  // deformable and rigid structure particles
   // particles the step integrates or moves: fluid, soil and structures; walls excluded
   std::size_t moving_count() const { return n_fluid_ + n_soil_ + n_structure_; }
+  // seepage coupling of a two-phase scene (null otherwise)
+  const Seepage* seepage() const { return seepage_.get(); }
   // prescribed motion of the rigid structures (null if the scene has none)
   const RigidMotions* rigid_motions() const { return rigid_.get(); }
   // Gravity at time t, ramped smoothly from gravity_ramp_from x g over scene.gravity_ramp (Adami et al.
@@ -54,6 +57,10 @@ class Simulation {
   void neighbour_search();  // cell list (and, every reorder_every steps, particles sorted by cell)
   void forces();            // pressure, wall extrapolation, momentum at the current state
   void choose_time_step();
+  // Half kick v += dt/2 a of the integrated particles; with pore water the drag is implicit
+  // (Seepage::kick).
+  void kick(double half);
+  void apply_surcharge();
 
   Scene scene_;
   Particles P_;
@@ -64,6 +71,7 @@ class Simulation {
   std::unique_ptr<SoilWalls> soil_walls_;
   std::unique_ptr<RigidMotions> rigid_;
   std::unique_ptr<SoilStructureContact> contact_;
+  std::unique_ptr<Seepage> seepage_;
   StateBounds bounds_;
   TimeStepLimits limits_;
   StateSummary state_;

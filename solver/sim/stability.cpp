@@ -17,13 +17,19 @@ StateSummary check_state(const Particles& P, const Box& domain, const StateBound
   const std::size_t n = P.size();
   double v2max = 0, a2max = 0;
   long bad = -1;
+  // pore water (two-phase): rho is the partial density n rho_w, judged by its intrinsic density
+  const double* por = P.has_field("porosity") ? P.extra_fields().at("porosity").data() : nullptr;
+  auto density_ratio = [&](std::size_t i, const PhaseBounds& b) {
+    const double r = P.rho[i] / b.rho0[P.material[i]];
+    return por && P.kind[i] == Kind::Fluid ? r / por[i] : r;
+  };
 #pragma omp parallel for reduction(max : v2max, a2max) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_moving(P.kind[i])) continue;
     const PhaseBounds& b = P.kind[i] == Kind::Fluid ? bounds.fluid : bounds.soil;
     const double v2 = P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i];
     const double a2 = P.ax[i] * P.ax[i] + P.ay[i] * P.ay[i] + P.az[i] * P.az[i];
-    const double ratio = P.rho[i] / b.rho0[P.material[i]];
+    const double ratio = density_ratio(i, b);
     const bool ok = std::isfinite(v2) && std::isfinite(a2) && std::isfinite(P.x[i] + P.y[i] + P.z[i]) &&
                     std::isfinite(ratio) && v2 <= b.max_speed * b.max_speed &&
                     std::abs(ratio - 1.0) <= bounds.max_density_variation && domain.contains(P.x[i], P.y[i], P.z[i]);
@@ -44,7 +50,7 @@ StateSummary check_state(const Particles& P, const Box& domain, const StateBound
     const double v = std::sqrt(P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
     const double a = std::sqrt(P.ax[i] * P.ax[i] + P.ay[i] * P.ay[i] + P.az[i] * P.az[i]);
     const PhaseBounds& b = P.kind[i] == Kind::Fluid ? bounds.fluid : bounds.soil;
-    const double ratio = P.rho[i] / b.rho0[P.material[i]];
+    const double ratio = density_ratio(i, b);
     if (!std::isfinite(P.x[i] + P.y[i] + P.z[i])) q << "position is not finite";
     else if (!std::isfinite(v)) q << "velocity is not finite";
     else if (!std::isfinite(a)) q << "acceleration is not finite";

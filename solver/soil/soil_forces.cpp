@@ -104,10 +104,10 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const std::size_t n = P.size();
   const StressView sv(P);
   double* eps_p = P.field(SoilFields::plastic_strain).data();
-  const bool wall_velocity = P.has_field("wall_vx");
-  const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
-  const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
-  const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
+  const bool wall_velocity = P.has_field("soil_wall_vx");
+  const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
+  const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
+  const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
   double* pc = has_cam_clay_ ? P.field(SoilFields::preconsolidation).data() : nullptr;
   double* eps_v = has_cam_clay_ ? P.field(SoilFields::plastic_volumetric_strain).data() : nullptr;
   long bad = -1, unconverged = -1;
@@ -248,10 +248,10 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   const double w_dx = kernel.W(scene_.dx);
-  const bool wall_velocity = P.has_field("wall_vx");
-  const double* wvx = wall_velocity ? P.field("wall_vx").data() : nullptr;
-  const double* wvy = wall_velocity ? P.field("wall_vy").data() : nullptr;
-  const double* wvz = wall_velocity ? P.field("wall_vz").data() : nullptr;
+  const bool wall_velocity = P.has_field("soil_wall_vx");
+  const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
+  const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
+  const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
   const double* cw = has_cam_clay_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {

@@ -1,0 +1,290 @@
+#include "coupling/seepage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fluid/equation_of_state.hpp"
+
+namespace geosph {
+
+namespace {
+// Water at 20 C: dynamic viscosity 1.002e-3 Pa s (CRC Handbook of Chemistry and Physics, "Viscosity of
+// water"), used with grain_size when the fluid declares no kinematic viscosity.
+constexpr double kWaterViscosity20C = 1.002e-3;
+constexpr double kMinPorosity = 0.05;
+constexpr double kImmovable = 1e30;  // partner density standing for a held (fixed) skeleton  // floor on the water's porosity (its intrinsic density is rho / n)
+}  // namespace
+
+Seepage::Seepage(const Scene& scene) : scene_(scene) {
+  const FluidMaterial& w = scene.materials.front();
+  rho_w_ = w.density;
+  // Hydraulic conductivity is defined with the unit weight of water; scenes without gravity (e.g. the
+  // excess pore pressure of consolidation) use standard gravity 9.80665 m/s^2.
+  const double g = std::sqrt(scene.gravity[0] * scene.gravity[0] + scene.gravity[1] * scene.gravity[1] +
+                             scene.gravity[2] * scene.gravity[2]);
+  gamma_w_ = rho_w_ * (g > 0 ? g : 9.80665);
+  mu_w_ = w.kinematic_viscosity > 0 ? w.kinematic_viscosity * w.density : kWaterViscosity20C;
+}
+
+double Seepage::conductivity(std::size_t mat, double n) const {
+  const SoilMaterial& m = scene_.soils[mat];
+  n = std::clamp(n, 1e-3, 0.999);
+  if (m.hydraulic_conductivity > 0) return m.hydraulic_conductivity * kozeny_carman(n) / kozeny_carman(m.porosity);
+  return gamma_w_ / mu_w_ * m.grain_size * m.grain_size / 180.0 * kozeny_carman(n);
+}
+
+double Seepage::undrained_wave_speed(double soil_wave_speed) const {
+  const double Kw = rho_w_ * scene_.materials.front().sound_speed * scene_.materials.front().sound_speed;
+  double c2 = 0;
+  for (const auto& m : scene_.soils) {
+    if (!m.saturated()) continue;
+    const double M = soil_wave_speed * soil_wave_speed * m.density;  // K + 4G/3 of the skeleton
+    c2 = std::max(c2, (Kw / m.porosity + M) / (m.density + m.porosity * rho_w_));
+  }
+  return std::sqrt(c2);
+}
+
+void Seepage::allocate(Particles& P) const {
+  P.field(SeepageFields::porosity);
+  P.field(SeepageFields::conductivity);
+  P.field(SeepageFields::drag_c);
+  P.field(SeepageFields::porosity_rate);
+  P.field(SeepageFields::other_phase_sum);
+  P.field(SeepageFields::skeleton_sum);
+  P.field(SeepageFields::gx); P.field(SeepageFields::gy); P.field(SeepageFields::gz);
+  for (const char* f : {SeepageFields::partner_vx, SeepageFields::partner_vy, SeepageFields::partner_vz,
+                        SeepageFields::partner_ax, SeepageFields::partner_ay, SeepageFields::partner_az,
+                        SeepageFields::partner_rho})
+    P.field(f);
+}
+
+void Seepage::initialise(Particles& P, const CellList& cells) const {
+  update_porosity(P, cells);
+  std::visit([&](const auto& k) { interpolate_water_porosity(k, P, cells); },
+             make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+  const double* n = P.field(SeepageFields::porosity).data();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    const double vol = P.m[i] / P.rho[i];  // built at the intrinsic density on the lattice
+    P.rho[i] *= n[i];
+    P.m[i] = P.rho[i] * vol;
+  }
+}
+
+void Seepage::update_porosity(Particles& P, const CellList& cells) const {
+  std::visit([&](const auto& k) { porosity_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+template <class K>
+void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells) const {
+  const std::size_t n = P.size();
+  double* por = P.field(SeepageFields::porosity).data();
+  double* cond = P.field(SeepageFields::conductivity).data();
+  // skeleton: n = 1 - rho / rho_s
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const SoilMaterial& m = scene_.soils[P.material[i]];
+    if (!m.saturated()) { por[i] = 0; cond[i] = 0; continue; }
+    por[i] = std::clamp(1.0 - P.rho[i] / m.grain_density(), 0.0, 1.0);
+    cond[i] = conductivity(P.material[i], por[i]);
+  }
+  // kernel sums of the other phase, sum_j V_j W_ij (the drag's pair normalisation)
+  // and, at water particles, the skeleton's kernel-gradient sum G = sum_s V_s grad W (the pore-pressure force)
+  double* S = P.field(SeepageFields::other_phase_sum).data();
+  double* Sg = P.field(SeepageFields::skeleton_sum).data();
+  double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(), P.field(SeepageFields::gz).data()};
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Kind ki = P.kind[i];
+    if (ki != Kind::Soil && ki != Kind::Fluid) continue;
+    const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
+    double sum = 0, sg = 0, g[3] = {0, 0, 0};
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
+      if (kj != other && !skeleton) return;
+      const double Vj = P.m[j] / P.rho[j], r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
+      if (kj == other) sum += Vj * W;
+      if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
+    });
+    S[i] = sum;
+    Sg[i] = sg;
+    for (int a = 0; a < 3; ++a) G[a][i] = g[a];
+  }
+}
+
+// t = 0 only: n_i = 1 - sum_s (1-n_s) V_s W_is / sum_w V_w W_iw (the water's own kernel sum, so that
+// free water above soil has n -> 1 and wall/free-surface deficiencies cancel). Later the water's
+// porosity follows its rate (porosity_rate): the interpolation itself ripples by ~0.5% as water moves
+// across the skeleton's particle lattice, which the stiff pore pressure would turn into kPa of noise.
+template <class K>
+void Seepage::interpolate_water_porosity(const K& kernel, Particles& P, const CellList& cells) const {
+  double* por = P.field(SeepageFields::porosity).data();
+  const double W0 = kernel.W(0.0);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    double solid = 0, water = P.m[i] / P.rho[i] * W0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double, double, double, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj == Kind::Fluid) water += P.m[j] / P.rho[j] * kernel.W(std::sqrt(r2));
+      else if (kj == Kind::Soil) solid += (1.0 - por[j]) * P.m[j] / P.rho[j] * kernel.W(std::sqrt(r2));
+    });
+    por[i] = std::clamp(1.0 - solid / water, kMinPorosity, 1.0);
+  }
+}
+
+void Seepage::porosity_rate(Particles& P, const CellList& cells) const {
+  std::visit([&](const auto& k) { porosity_rate_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+// Following the water, n = 1 - phi changes as the skeleton deforms and as the water moves through a
+// porosity gradient:  D^w n/Dt = (1 - n) div v_s + (v_w - v_s) . grad n   (from the skeleton's mass balance
+// D^s n/Dt = (1 - n) div v_s with incompressible grains). div v_s = sum_s V_s (v_s - v~_s) . grad W and
+// v~_s the Shepard-averaged skeleton velocity at the water particle; grad n = sum_w V_w (n_w - n_i) grad W
+// over the water's own porosities (free water carries n = 1). Both vanish for uniform fields: no ripple.
+template <class K>
+void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& cells) const {
+  const std::size_t n = P.size();
+  const double* por = P.field(SeepageFields::porosity).data();
+  double* dn = P.field(SeepageFields::porosity_rate).data();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    double sW = 0, sv[3] = {0, 0, 0}, dv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, g[3] = {0, 0, 0};
+    double gn[3] = {0, 0, 0};
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj != Kind::Soil && kj != Kind::Fluid && kj != Kind::DummyWall) return;  // walls: skeleton at rest
+      const double r = std::sqrt(r2), Vj = P.m[j] / P.rho[j], fw = kernel.gradW_over_r(r);
+      const double gr[3] = {fw * dx, fw * dy, fw * dz};
+      if (kj == Kind::Fluid) {
+        for (int a = 0; a < 3; ++a) gn[a] += Vj * (por[j] - por[i]) * gr[a];
+        return;
+      }
+      const double W = kernel.W(r), v[3] = {P.vx[j], P.vy[j], P.vz[j]};
+      sW += Vj * W;
+      for (int a = 0; a < 3; ++a) {
+        sv[a] += Vj * v[a] * W;
+        g[a] += Vj * gr[a];
+        for (int b = 0; b < 3; ++b) dv[a][b] += Vj * v[a] * gr[b];
+      }
+    });
+    if (sW <= 0) { dn[i] = 0; continue; }
+    const double vs[3] = {sv[0] / sW, sv[1] / sW, sv[2] / sW};
+    const double div_vs = (dv[0][0] - vs[0] * g[0]) + (dv[1][1] - vs[1] * g[1]) + (dv[2][2] - vs[2] * g[2]);
+    const double w[3] = {P.vx[i] - vs[0], P.vy[i] - vs[1], P.vz[i] - vs[2]};
+    dn[i] = (1.0 - por[i]) * div_vs + w[0] * gn[0] + w[1] * gn[1] + w[2] * gn[2];
+  }
+}
+
+void Seepage::advance_porosity(Particles& P, double dt) const {
+  double* por = P.field(SeepageFields::porosity).data();
+  const double* dn = P.field(SeepageFields::porosity_rate).data();
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (P.kind[i] == Kind::Fluid) por[i] = std::clamp(por[i] + dt * dn[i], kMinPorosity, 1.0);
+}
+
+void Seepage::apply(Particles& P, const CellList& cells) const {
+  std::visit([&](const auto& k) { apply_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+}
+
+template <class K>
+void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) const {
+  const std::size_t n = P.size();
+  const double* por = P.field(SeepageFields::porosity).data();
+  const double* cond = P.field(SeepageFields::conductivity).data();
+  const double* S = P.field(SeepageFields::other_phase_sum).data();
+  const double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(),
+                        P.field(SeepageFields::gz).data()};
+  const double* Sg = P.field(SeepageFields::skeleton_sum).data();
+  double* C = P.field(SeepageFields::drag_c).data();
+  double* pv[3] = {P.field(SeepageFields::partner_vx).data(), P.field(SeepageFields::partner_vy).data(),
+                   P.field(SeepageFields::partner_vz).data()};
+  double* pa[3] = {P.field(SeepageFields::partner_ax).data(), P.field(SeepageFields::partner_ay).data(),
+                   P.field(SeepageFields::partner_az).data()};
+  double* prho = P.field(SeepageFields::partner_rho).data();
+  const double gw = gamma_w_;
+  const double* fixed = P.has_field("fixed") ? P.extra_fields().at("fixed").data() : nullptr;
+  auto saturated = [&](std::size_t i) { return P.kind[i] == Kind::Soil && scene_.soils[P.material[i]].saturated(); };
+  auto beta = [&](std::size_t s) { return por[s] * por[s] * gw / cond[s]; };  // n^2 gamma_w / k
+  // 1. pore-pressure force on the skeleton: the adjoint of the water's porosity rate (1 - n) div v_s
+  //    (porosity_rate_with), so that the pressure work on the skeleton equals the water's compression
+  //    energy: F_i = -V_i sum_j V_j (1 - n_j) p_j (grad_i W_ij + W_ij G_j / S_j), G_j = sum_s V_s grad_j W_js,
+  //    S_j = sum_s V_s W_js (walls bound the skeleton). In a uniform porosity this is -(1 - n) grad p;
+  //    the simpler -(1 - n) grad p estimate with a Shepard-averaged p is not adjoint and let a loaded
+  //    column's oscillation grow (measured on the consolidation column).
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!saturated(i)) continue;
+    double fp[3] = {0, 0, 0};
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+      const Kind kj = P.kind[j];
+      if (kj != Kind::Fluid && kj != Kind::DummyWall) return;
+      const double r = std::sqrt(r2), Vj = P.m[j] / P.rho[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
+      const double f = -Vj * (1.0 - por[j]) * P.p[j];
+      const double w_over_s = kj == Kind::Fluid && Sg[j] > 0 ? W / Sg[j] : 0.0;  // walls: no porosity rate
+      fp[0] += f * (fw * dx + w_over_s * G[0][j]);
+      fp[1] += f * (fw * dy + w_over_s * G[1][j]);
+      fp[2] += f * (fw * dz + w_over_s * G[2][j]);
+    });
+    P.ax[i] += fp[0] / P.rho[i];
+    P.ay[i] += fp[1] / P.rho[i];
+    P.az[i] += fp[2] / P.rho[i];
+  }
+  // 2. drag: each particle's rate C_i = sum_j c_ij and its partner phase's c-weighted velocity,
+  //    acceleration (without drag) and partial density, for the implicit update in Simulation::kick.
+  //    c_ij = beta V_j W_ij 2/(S_i + S_j) / rho_i, beta of the soil particle of the pair.
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Kind ki = P.kind[i];
+    C[i] = 0;
+    if (!saturated(i) && ki != Kind::Fluid) continue;
+    const double rhoi = P.rho[i];
+    double c = 0, sv[3] = {0, 0, 0}, sa[3] = {0, 0, 0}, sr = 0;
+    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double, double, double, double r2) {
+      const bool pair = ki == Kind::Soil ? P.kind[j] == Kind::Fluid : saturated(j);
+      if (!pair) return;
+      const double b = ki == Kind::Soil ? beta(i) : beta(j);
+      const double cij = b * (P.m[j] / P.rho[j]) * kernel.W(std::sqrt(r2)) * 2.0 / (S[i] + S[j]) / rhoi;
+      c += cij;
+      sv[0] += cij * P.vx[j]; sv[1] += cij * P.vy[j]; sv[2] += cij * P.vz[j];
+      if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner
+        sr += cij * kImmovable;
+        return;
+      }
+      sa[0] += cij * P.ax[j]; sa[1] += cij * P.ay[j]; sa[2] += cij * P.az[j];
+      sr += cij * P.rho[j];
+    });
+    C[i] = c;
+    if (c <= 0) continue;
+    for (int a = 0; a < 3; ++a) { pv[a][i] = sv[a] / c; pa[a][i] = sa[a] / c; }
+    prho[i] = sr / c;
+  }
+}
+
+// Backward Euler for the pair (particle, its partner phase) over h: the mixture velocity takes the
+// mass-weighted acceleration, the relative velocity w relaxes at lambda = C (1 + rho_i / rho_p):
+//   w' = (w + h (a_i - a_p)) / (1 + h lambda),  v_i' = v_m + h a_m + rho_p / (rho_i + rho_p) w'.
+// Unconditionally stable in the drag, and for stiff drag (low permeability) the pair moves as one
+// body under the sum of its forces (a point-implicit v_i' = (v_i + h a_i + h C v_p)/(1 + h C) would
+// lose the applied force's momentum: measured on an undrained column, the load did not reach the base).
+void Seepage::kick(Particles& P, std::size_t i, double h) const {
+  const double c = P.extra_fields().at(SeepageFields::drag_c)[i];
+  const double rp = P.extra_fields().at(SeepageFields::partner_rho)[i], ri = P.rho[i];
+  const double lambda = c * (1.0 + ri / rp), share = rp / (ri + rp);
+  double* v[3] = {&P.vx[i], &P.vy[i], &P.vz[i]};
+  const double a[3] = {P.ax[i], P.ay[i], P.az[i]};
+  const char* vn[3] = {SeepageFields::partner_vx, SeepageFields::partner_vy, SeepageFields::partner_vz};
+  const char* an[3] = {SeepageFields::partner_ax, SeepageFields::partner_ay, SeepageFields::partner_az};
+  for (int d = 0; d < 3; ++d) {
+    const double vp = P.extra_fields().at(vn[d])[i], ap = P.extra_fields().at(an[d])[i];
+    const double vm = (ri * *v[d] + rp * vp) / (ri + rp), am = (ri * a[d] + rp * ap) / (ri + rp);
+    const double w = (*v[d] - vp + h * (a[d] - ap)) / (1.0 + h * lambda);
+    *v[d] = vm + h * am + share * w;
+  }
+}
+
+}  // namespace geosph

@@ -1,0 +1,92 @@
+// Saturated soil as two particle sets that share space: the soil skeleton (Kind::Soil, effective
+// stress from its constitutive model) and the pore water (Kind::Fluid, weakly compressible), after
+// Bui & Fukagawa (2013), Int. J. Numer. Anal. Meth. Geomech. 37, 31-50, with the mixture equations of
+// Biot/Zienkiewicz for incompressible grains (Zienkiewicz et al. 1999, "Computational Geomechanics",
+// eqs. 2.11-2.14, u-w form without the grains' compressibility):
+//   water    n rho_w  dv_w/dt = -n grad p + n rho_w g - R
+//   skeleton (1-n) rho_s dv_s/dt = div sigma' - (1-n) grad p + (1-n) rho_s g + R
+//   drag     R = (n^2 gamma_w / k) (v_w - v_s)   (Darcy: n (v_w - v_s) = -(k/gamma_w)(grad p - rho_w g))
+// Particles carry partial densities: water rho = n rho_w (its intrinsic density rho_w = rho / n sets the
+// pore pressure through the Tait equation), soil rho = (1-n) rho_s. Porosity:
+//   skeleton  n_i = 1 - rho_i / rho_s (its continuity equation: n follows the volumetric strain)
+//   water     interpolated from the skeleton at t = 0, then carried by the water particle with its rate
+//             D^w n/Dt = (1 - n) div v_s + (v_w - v_s) . grad n (see Seepage::porosity_rate_with)
+// Hydraulic conductivity, Kozeny-Carman (Carman 1937; Bear 1972, "Dynamics of Fluids in Porous Media",
+// eq. 5.10.18):  k(n) = (gamma_w / mu) d^2/180 n^3/(1-n)^2, or k0 f(n)/f(n0) with f = n^3/(1-n)^2.
+// SPH forms (V = m/rho, the particle's share of the mixture volume):
+//   drag on soil i from water j  F_ij = beta_i V_i V_j W_ij (v_j - v_i) 2/(S_i + S_j), beta = n^2 gamma_w / k,
+//                                equal and opposite on j (Bui & Fukagawa 2013, eq. 27 with pairwise weights);
+//                                S = sum V W over the other phase (the lattice sum is not exactly 1: 0.4%
+//                                too much drag without it, measured on the Darcy case)
+//   pore-pressure gradient at soil i  grad p_i = sum_j V_j (p_j - p~_i) grad_i W_ij over water and
+//                                water-wall particles, p~_i their Shepard average (exact for constant p)
+// The drag is integrated implicitly for each particle and its partner phase (Seepage::kick), so the
+// relaxation time k/(n g) does not limit the time step (as the implicit drag of Monaghan 1997,
+// J. Comput. Phys. 138, 801-820, for dusty gas); the stored accelerations exclude the drag.
+#pragma once
+#include <array>
+
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+#include "io/scene.hpp"
+
+namespace geosph {
+
+struct SeepageFields {
+  static constexpr const char* porosity = "porosity";                  // soil and water particles, water walls
+  static constexpr const char* conductivity = "hydraulic_conductivity"; // soil particles [m/s]
+  static constexpr const char* porosity_rate = "porosity_rate";        // water particles: D^w n/Dt [1/s]
+  static constexpr const char* other_phase_sum = "other_phase_kernel_sum";  // sum_j V_j W_ij over the other phase
+  static constexpr const char* gx = "skeleton_kernel_gradient_x", *gy = "skeleton_kernel_gradient_y",
+                               *gz = "skeleton_kernel_gradient_z";  // water particles: G = sum_s V_s grad W
+  static constexpr const char* skeleton_sum = "skeleton_kernel_sum";  // water particles: sum_s V_s W (walls included)
+  static constexpr const char* drag_c = "drag_rate";                    // C_i [1/s] of the point-implicit drag
+  // the other phase around a particle, weighted by the drag: velocity, acceleration (without drag), density
+  static constexpr const char* partner_vx = "drag_partner_vx", *partner_vy = "drag_partner_vy",
+                               *partner_vz = "drag_partner_vz";
+  static constexpr const char* partner_ax = "drag_partner_ax", *partner_ay = "drag_partner_ay",
+                               *partner_az = "drag_partner_az";
+  static constexpr const char* partner_rho = "drag_partner_density";
+};
+
+// Kozeny-Carman porosity function f(n) = n^3 / (1 - n)^2.
+inline double kozeny_carman(double n) { return n * n * n / ((1.0 - n) * (1.0 - n)); }
+
+class Seepage {
+ public:
+  explicit Seepage(const Scene& scene);
+  void allocate(Particles& P) const;
+  // At t = 0 (after the first neighbour search): porosity of every particle, and the water particles'
+  // masses and partial densities n rho_w so that their intrinsic density is the one they were built with.
+  void initialise(Particles& P, const CellList& cells) const;
+  // Porosity and conductivity of the skeleton (from its density) and each phase's kernel sum of the other.
+  void update_porosity(Particles& P, const CellList& cells) const;
+  // The water particles' porosity rate at (x^{n+1}, v^{n+1/2}) and its update over dt.
+  void porosity_rate(Particles& P, const CellList& cells) const;
+  void advance_porosity(Particles& P, double dt) const;
+  // Adds the skeleton's pore-pressure force to its acceleration and stores each particle's drag rate and
+  // partner state for the implicit drag (kick); call after both phases' momentum and all other forces.
+  void apply(Particles& P, const CellList& cells) const;
+  // Half kick of particle i (drag rate > 0) over h with the implicit drag.
+  void kick(Particles& P, std::size_t i, double h) const;
+  // Hydraulic conductivity of soil material `mat` at porosity n [m/s].
+  double conductivity(std::size_t mat, double n) const;
+  // Undrained P-wave speed of the mixture, sqrt((K_w/n + K + 4G/3) / rho_sat), for the time step.
+  double undrained_wave_speed(double skeleton_modulus_max) const;
+  double unit_weight() const { return gamma_w_; }
+
+ private:
+  template <class K>
+  void apply_with(const K& kernel, Particles& P, const CellList& cells) const;
+  template <class K>
+  void porosity_with(const K& kernel, Particles& P, const CellList& cells) const;
+  template <class K>
+  void interpolate_water_porosity(const K& kernel, Particles& P, const CellList& cells) const;
+  template <class K>
+  void porosity_rate_with(const K& kernel, Particles& P, const CellList& cells) const;
+
+  const Scene& scene_;
+  double rho_w_, gamma_w_, mu_w_;
+};
+
+}  // namespace geosph
