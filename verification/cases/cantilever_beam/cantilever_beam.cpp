@@ -80,8 +80,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["H_over_dx"] = b.H / scene.dx;
   rec.options["artificial_stress"] = scene.soils.front().artificial_stress;
   rec.options["kernel_gradient_correction"] = scene.kernel_gradient_correction;
-  const auto& tol = cfg.tolerance("deflection_rel_error");
-  rec.add_metric("deflection_rel_error", ok ? std::abs(delta_sph - b.delta) / b.delta : NAN, tol.value, tol.why);
+  add_case_metric(rec, cfg, "deflection_rel_error", std::abs(delta_sph - b.delta) / b.delta, ok);
   rec.snapshot = field_snapshot(sim, SoilFields::xx, "Pa");
   return rec;
 }
@@ -109,10 +108,8 @@ std::vector<Record> run_cantilever_beam(const CaseContext& ctx) {
   fine.extra["deflection_extrapolated_first_order_m"] =
       richardson({spacings.end()[-2], spacings.back()}, {deflections.end()[-2], deflections.back()}, 1.0).value;
   const bool all_stable = std::all_of(out.begin(), out.end(), [](const Record& r) { return r.stable; });
-  const auto& tol = cfg.tolerance("extrapolated_deflection_rel_error");
   fine.metrics.clear();
-  fine.add_metric("extrapolated_deflection_rel_error", all_stable ? std::abs(ex.value - theory) / theory : NAN,
-                  tol.value, tol.why);
+  add_case_metric(fine, cfg, "extrapolated_deflection_rel_error", std::abs(ex.value - theory) / theory, all_stable);
   return out;
 }
 

@@ -100,11 +100,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       rec.extra["front_rel_l2_uncorrected_" + std::string(key)] = relative_l2(zs, ze);
       rec.extra["release_lag_T_" + std::string(key)] = best_time_lag(front.x, front.y, ts, ze);
     }
-    if (scored) {
-      const auto& tol = cfg.tolerance("surge_speed_rel_error_" + std::string(key));
-      rec.add_metric("surge_speed_rel_error_" + std::string(key),
-                     ok ? std::abs(sph_speed - ref_speed) / ref_speed : NAN, tol.value, tol.why);
-    }
+    if (scored)
+      add_case_metric(rec, cfg, "surge_speed_rel_error_" + std::string(key), std::abs(sph_speed - ref_speed) / ref_speed, ok);
   }
   rec.snapshot = pressure_snapshot(sim);
   return rec;

@@ -116,8 +116,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       he.push_back(exp.column("y")[k]);
       hs.push_back(xq > pr.x.back() + 0.5 * dx ? 0.0 : interpolate(pr.x, pr.h, xq));
     }
-    const auto& tol = cfg.tolerance("profile_rel_l2");
-    rec.add_metric("profile_rel_l2", ok ? relative_l2(hs, he) : NAN, tol.value, tol.why);
+    add_case_metric(rec, cfg, "profile_rel_l2", relative_l2(hs, he), ok);
   }
   const std::vector<std::tuple<std::string, std::string, double>> scalars = {
       {"runout_rel_error", "runout_m", sph_runout},
@@ -127,8 +126,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     if (!cfg.tolerances.count(metric)) continue;
     const double ref = header_number(exp, key);
     rec.extra[key + std::string("_reference")] = ref;
-    const auto& tol = cfg.tolerance(metric);
-    rec.add_metric(metric, ok ? std::abs(value - ref) / ref : NAN, tol.value, tol.why);
+    add_case_metric(rec, cfg, metric, std::abs(value - ref) / ref, ok);
   }
   // DEM reference (LIGGGHTS, reference/dem): overlaid, and its profile and run-out differences are
   // recorded (not scored: the DEM micro-parameters are calibrated on the angle of repose only, see

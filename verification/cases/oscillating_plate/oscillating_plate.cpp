@@ -96,8 +96,7 @@ Record run_variant(const CaseConfig& cfg, const CaseContext& ctx, double spacing
   // single-resolution frequency error: the metric of the study records (unscored); the scored
   // metric is added to the finest record by run_oscillating_plate
   {
-    const auto& tol1 = cfg.tolerance("frequency_rel_error");
-    rec.add_metric("frequency_rel_error", ok ? std::abs(omega_sph - omega) / omega : NAN, tol1.value, tol1.why);
+    add_case_metric(rec, cfg, "frequency_rel_error", std::abs(omega_sph - omega) / omega, ok);
   }
   rec.snapshot = pressure_snapshot(sim);
   return rec;
@@ -131,11 +130,9 @@ std::vector<Record> run_oscillating_plate(const CaseContext& ctx) {
   if (ex.order_observed) fine.extra["observed_order_frequency"] = ex.order;
   fine.extra["omega_extrapolated"] = extrapolated;
   fine.extra["extrapolation_order"] = ex.order;
-  const auto& tol = cfg.tolerance("extrapolated_frequency_rel_error");
   const bool all_stable = std::all_of(out.begin(), out.end(), [](const Record& r) { return r.stable; });
   fine.metrics.clear();  // the finest record is judged on the extrapolated frequency
-  fine.add_metric("extrapolated_frequency_rel_error", all_stable ? std::abs(extrapolated - omega) / omega : NAN,
-                  tol.value, tol.why);
+  add_case_metric(fine, cfg, "extrapolated_frequency_rel_error", std::abs(extrapolated - omega) / omega, all_stable);
   out.push_back(run_variant(cfg, ctx, dxs.front(), false));
   return out;
 }

@@ -108,10 +108,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["H_over_dx"] = H0 / dx;
   rec.options["interface_friction_angle"] = wall.interface_friction_angle;
   rec.options["walls"] = scene.walls.slip;
-  const auto& tk = cfg.tolerance("earth_pressure_coefficient_rel_error");
-  rec.add_metric("earth_pressure_coefficient_rel_error", ok ? std::abs(K_sim - K_lim) / K_lim : NAN, tk.value, tk.why);
-  const auto& td = cfg.tolerance("pressure_distribution_rel_l2");
-  rec.add_metric("pressure_distribution_rel_l2", ok ? relative_l2(sim_p, ref_p) : NAN, td.value, td.why);
+  add_case_metric(rec, cfg, "earth_pressure_coefficient_rel_error", std::abs(K_sim - K_lim) / K_lim, ok);
+  add_case_metric(rec, cfg, "pressure_distribution_rel_l2", relative_l2(sim_p, ref_p), ok);
   rec.snapshot = field_snapshot(sim, SoilFields::plastic_strain, "-");
   return rec;
 }

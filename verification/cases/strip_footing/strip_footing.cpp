@@ -54,8 +54,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["q_max_over_c"] = q_max / c;
   rec.extra["settlement_at_q_max_over_B"] = s_at_max / B;
   rec.extra["footing_width_over_dx"] = B / dx;
-  const auto& tol = cfg.tolerance("bearing_capacity_rel_error");
-  rec.add_metric("bearing_capacity_rel_error", ok ? std::abs(q_max - q_prandtl) / q_prandtl : NAN, tol.value, tol.why);
+  add_case_metric(rec, cfg, "bearing_capacity_rel_error", std::abs(q_max - q_prandtl) / q_prandtl, ok);
   rec.snapshot = field_snapshot(sim, SoilFields::plastic_strain, "-");
   return rec;
 }
