@@ -271,19 +271,28 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
 // Unconditionally stable in the drag, and for stiff drag (low permeability) the pair moves as one
 // body under the sum of its forces (a point-implicit v_i' = (v_i + h a_i + h C v_p)/(1 + h C) would
 // lose the applied force's momentum: measured on an undrained column, the load did not reach the base).
-void Seepage::kick(Particles& P, std::size_t i, double h) const {
-  const double c = P.extra_fields().at(SeepageFields::drag_c)[i];
-  const double rp = P.extra_fields().at(SeepageFields::partner_rho)[i], ri = P.rho[i];
-  const double lambda = c * (1.0 + ri / rp), share = rp / (ri + rp);
-  double* v[3] = {&P.vx[i], &P.vy[i], &P.vz[i]};
-  const double a[3] = {P.ax[i], P.ay[i], P.az[i]};
-  const char* vn[3] = {SeepageFields::partner_vx, SeepageFields::partner_vy, SeepageFields::partner_vz};
-  const char* an[3] = {SeepageFields::partner_ax, SeepageFields::partner_ay, SeepageFields::partner_az};
-  for (int d = 0; d < 3; ++d) {
-    const double vp = P.extra_fields().at(vn[d])[i], ap = P.extra_fields().at(an[d])[i];
-    const double vm = (ri * *v[d] + rp * vp) / (ri + rp), am = (ri * a[d] + rp * ap) / (ri + rp);
-    const double w = (*v[d] - vp + h * (a[d] - ap)) / (1.0 + h * lambda);
-    *v[d] = vm + h * am + share * w;
+void Seepage::kick(Particles& P, double h, const double* fixed) const {
+  const auto& f = P.extra_fields();
+  const double* C = f.at(SeepageFields::drag_c).data();
+  const double* prho = f.at(SeepageFields::partner_rho).data();
+  const double* pv[3] = {f.at(SeepageFields::partner_vx).data(), f.at(SeepageFields::partner_vy).data(),
+                         f.at(SeepageFields::partner_vz).data()};
+  const double* pa[3] = {f.at(SeepageFields::partner_ax).data(), f.at(SeepageFields::partner_ay).data(),
+                         f.at(SeepageFields::partner_az).data()};
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(C[i] > 0) || !is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
+    const double rp = prho[i], ri = P.rho[i];
+    const double lambda = C[i] * (1.0 + ri / rp), share = rp / (ri + rp);
+    double* v[3] = {&P.vx[i], &P.vy[i], &P.vz[i]};
+    const double a[3] = {P.ax[i], P.ay[i], P.az[i]};
+    for (int d = 0; d < 3; ++d) {
+      const double vp = pv[d][i], ap = pa[d][i];
+      const double vm = (ri * *v[d] + rp * vp) / (ri + rp), am = (ri * a[d] + rp * ap) / (ri + rp);
+      const double w = (*v[d] - vp + h * (a[d] - ap)) / (1.0 + h * lambda);
+      *v[d] = vm + h * am + share * w;
+    }
   }
 }
 

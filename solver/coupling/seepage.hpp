@@ -67,8 +67,9 @@ class Seepage {
   // Adds the skeleton's pore-pressure force to its acceleration and stores each particle's drag rate and
   // partner state for the implicit drag (kick); call after both phases' momentum and all other forces.
   void apply(Particles& P, const CellList& cells) const;
-  // Half kick of particle i (drag rate > 0) over h with the implicit drag.
-  void kick(Particles& P, std::size_t i, double h) const;
+  // Half kick over h, with the implicit drag, of the integrated particles that have a drag partner
+  // (drag rate > 0; `fixed` particles excluded); the others take the plain kick.
+  void kick(Particles& P, double h, const double* fixed) const;
   // Hydraulic conductivity of soil material `mat` at porosity n [m/s].
   double conductivity(std::size_t mat, double n) const;
   // Undrained P-wave speed of the mixture, sqrt((K_w/n + K + 4G/3) / rho_sat), for the time step.

@@ -124,13 +124,10 @@ void Simulation::kick(double half) {
   const double* C = seepage_ ? P.field(SeepageFields::drag_c).data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0)) continue;
-    if (C && C[i] > 0) {
-      seepage_->kick(P, i, half);
-    } else {
-      P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
-    }
+    if (!is_moving(P.kind[i]) || (fixed && fixed[i] > 0) || (C && C[i] > 0)) continue;
+    P.vx[i] += half * P.ax[i]; P.vy[i] += half * P.ay[i]; P.vz[i] += half * P.az[i];
   }
+  if (seepage_) seepage_->kick(P, half, fixed);
 }
 
 void Simulation::choose_time_step() {
