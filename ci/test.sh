@@ -3,8 +3,12 @@
 # report-generator tests and the verification catalogue at its quick level). Heavier studies
 # carry the ctest label `convergence` and are excluded here; run them with
 #   ctest --test-dir build -L convergence
+# Catalogue cases that fail today, each tracked by an open issue, carry the label `open` (listed in
+# verification/CMakeLists.txt and the README); the main job (ci/run-catalogue.sh) still runs them
+# and the report marks them failing. Run them with
+#   ctest --test-dir build -L open
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 bash "$ROOT/ci/build.sh"
-ctest --test-dir "$BUILD_DIR" -LE convergence --output-on-failure
+ctest --test-dir "$BUILD_DIR" -LE 'convergence|open' --output-on-failure
