@@ -6,6 +6,7 @@
 #include "cases/cantilever_beam/cantilever_beam.hpp"
 #include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
 #include "cases/dam_break_2d/dam_break_2d.hpp"
+#include "cases/darcy_seepage/darcy_seepage.hpp"
 #include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
 #include "cases/granular_collapse_scaling/granular_collapse_scaling.hpp"
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
@@ -35,6 +36,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"rankine_passive", run_rankine_passive},
       {"structure_sliding", run_structure_sliding},
       {"terzaghi_consolidation", run_terzaghi_consolidation},
+      {"darcy_seepage", run_darcy_seepage},
   };
   return cases;
 }
