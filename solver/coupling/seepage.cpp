@@ -52,6 +52,7 @@ void Seepage::allocate(Particles& P) const {
   P.field(SeepageFields::other_phase_sum);
   P.field(SeepageFields::skeleton_sum);
   P.field(SeepageFields::gx); P.field(SeepageFields::gy); P.field(SeepageFields::gz);
+  P.field(SeepageFields::nx); P.field(SeepageFields::ny); P.field(SeepageFields::nz);
   for (const char* f : {SeepageFields::partner_vx, SeepageFields::partner_vy, SeepageFields::partner_vz,
                         SeepageFields::partner_ax, SeepageFields::partner_ay, SeepageFields::partner_az,
                         SeepageFields::partner_rho})
@@ -94,14 +95,19 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   double* S = P.field(SeepageFields::other_phase_sum).data();
   double* Sg = P.field(SeepageFields::skeleton_sum).data();
   double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(), P.field(SeepageFields::gz).data()};
+  double* GN[3] = {P.field(SeepageFields::nx).data(), P.field(SeepageFields::ny).data(), P.field(SeepageFields::nz).data()};
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
     if (ki != Kind::Soil && ki != Kind::Fluid) continue;
     const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
-    double sum = 0, sg = 0, g[3] = {0, 0, 0};
+    double sum = 0, sg = 0, g[3] = {0, 0, 0}, gn[3] = {0, 0, 0};
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
+      if (ki == Kind::Fluid && kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
+        const double c = P.m[j] / P.rho[j] * (por[j] - por[i]) * kernel.gradW_over_r(std::sqrt(r2));
+        gn[0] += c * dx; gn[1] += c * dy; gn[2] += c * dz;
+      }
       const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
       if (kj != other && !skeleton) return;
       const double Vj = P.m[j] / P.rho[j], r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
@@ -110,7 +116,7 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
     });
     S[i] = sum;
     Sg[i] = sg;
-    for (int a = 0; a < 3; ++a) G[a][i] = g[a];
+    for (int a = 0; a < 3; ++a) { G[a][i] = g[a]; GN[a][i] = gn[a]; }
   }
 }
 
@@ -200,6 +206,8 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   const double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(),
                         P.field(SeepageFields::gz).data()};
   const double* Sg = P.field(SeepageFields::skeleton_sum).data();
+  const double* GN[3] = {P.field(SeepageFields::nx).data(), P.field(SeepageFields::ny).data(),
+                         P.field(SeepageFields::nz).data()};
   double* C = P.field(SeepageFields::drag_c).data();
   double* pv[3] = {P.field(SeepageFields::partner_vx).data(), P.field(SeepageFields::partner_vy).data(),
                    P.field(SeepageFields::partner_vz).data()};
@@ -216,6 +224,10 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   //    S_j = sum_s V_s W_js (walls bound the skeleton). In a uniform porosity this is -(1 - n) grad p;
   //    the simpler -(1 - n) grad p estimate with a Shepard-averaged p is not adjoint and let a loaded
   //    column's oscillation grow (measured on the consolidation column).
+  //    That part alone is -grad((1 - n) p) = -(1 - n) grad p + p grad n: where the porosity changes (the
+  //    soil surface under free water, n: 0.4 -> 1) it pulled the top of the skeleton up. The rate's
+  //    advective term -v~_s . grad n, adjoint likewise, removes it: F_i += -V_i sum_j V_j p_j grad n_j W_ij / S_j
+  //    (grad n_j over the water, update_porosity), so the total is -(1 - n) grad p (Biot's interphase force).
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (!saturated(i)) continue;
@@ -226,9 +238,10 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
       const double r = std::sqrt(r2), Vj = P.m[j] / P.rho[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
       const double f = -Vj * (1.0 - por[j]) * P.p[j];
       const double w_over_s = kj == Kind::Fluid && Sg[j] > 0 ? W / Sg[j] : 0.0;  // walls: no porosity rate
-      fp[0] += f * (fw * dx + w_over_s * G[0][j]);
-      fp[1] += f * (fw * dy + w_over_s * G[1][j]);
-      fp[2] += f * (fw * dz + w_over_s * G[2][j]);
+      const double fn = -Vj * P.p[j] * w_over_s;
+      fp[0] += f * (fw * dx + w_over_s * G[0][j]) + (kj == Kind::Fluid ? fn * GN[0][j] : 0.0);
+      fp[1] += f * (fw * dy + w_over_s * G[1][j]) + (kj == Kind::Fluid ? fn * GN[1][j] : 0.0);
+      fp[2] += f * (fw * dz + w_over_s * G[2][j]) + (kj == Kind::Fluid ? fn * GN[2][j] : 0.0);
     });
     P.ax[i] += fp[0] / P.rho[i];
     P.ay[i] += fp[1] / P.rho[i];

@@ -40,6 +40,8 @@ struct SeepageFields {
   static constexpr const char* gx = "skeleton_kernel_gradient_x", *gy = "skeleton_kernel_gradient_y",
                                *gz = "skeleton_kernel_gradient_z";  // water particles: G = sum_s V_s grad W
   static constexpr const char* skeleton_sum = "skeleton_kernel_sum";  // water particles: sum_s V_s W (walls included)
+  static constexpr const char* nx = "porosity_gradient_x", *ny = "porosity_gradient_y",
+                               *nz = "porosity_gradient_z";  // water particles: grad n over the water
   static constexpr const char* drag_c = "drag_rate";                    // C_i [1/s] of the point-implicit drag
   // the other phase around a particle, weighted by the drag: velocity, acceleration (without drag), density
   static constexpr const char* partner_vx = "drag_partner_vx", *partner_vy = "drag_partner_vy",

@@ -132,7 +132,10 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
       const double mj = P.m[j], rhoj = P.rho[j];
       const double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
-      double coef = ni * mj * (pi_r2 + pr2[j]);
+      // pore water: its partial density n rho_w jumps where the porosity does (0.4 -> 1 at a soil surface
+      // under free water); (p_i + p_j)/(rho_i rho_j) estimates grad p / rho_i without a rho-gradient error
+      // (Colagrossi & Landrini 2003, J. Comput. Phys. 191, 448-475, for density jumps)
+      double coef = por ? ni * mj * (P.p[i] + P.p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
       const bool wall = kj == Kind::DummyWall;
       if (!(wall && free_slip_walls_)) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
         double vx = ux, vy = uy, vz = uz;

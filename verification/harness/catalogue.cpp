@@ -13,6 +13,7 @@
 #include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
 #include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
+#include "cases/soil_under_free_water/soil_under_free_water.hpp"
 #include "cases/strip_footing/strip_footing.hpp"
 #include "cases/structure_sliding/structure_sliding.hpp"
 #include "cases/terzaghi_consolidation/terzaghi_consolidation.hpp"
@@ -37,6 +38,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"structure_sliding", run_structure_sliding},
       {"terzaghi_consolidation", run_terzaghi_consolidation},
       {"darcy_seepage", run_darcy_seepage},
+      {"soil_under_free_water", run_soil_under_free_water},
   };
   return cases;
 }
