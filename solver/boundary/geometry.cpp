@@ -154,14 +154,17 @@ Particles build_particles(const Scene& s) {
     });
   }
   // Solid blocks of wall particles (a clamp, an obstacle) on the same lattice.
-  // They are marked in the optional field "wall_block" (1): a block holds what is embedded in it
-  // (a clamp), so its particles keep their own velocity instead of mirroring the material's.
-  for (const auto& b : s.walls.blocks)
+  // They are marked in the optional field "wall_block" (block index + 1): a block holds what is embedded
+  // in it (a clamp), so its particles keep their own velocity instead of mirroring the material's.
+  for (std::size_t k = 0; k < s.walls.blocks.size(); ++k) {
+    const auto& b = s.walls.blocks[k];
+    const double f = b.ramp > 0 ? 0.0 : 1.0;  // a ramped block starts at rest (Simulation::step)
     lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
-      P.field("wall_block").back() = 1.0;
-      P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
+      P.field("wall_block").back() = static_cast<double>(k + 1);
+      P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
     });
+  }
   return P;
 }
 

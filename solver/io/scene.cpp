@@ -242,6 +242,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
       for (auto& c : w->array_of_objects("blocks")) {
         ContainerSpec cs = parse_box(c, d);
         cs.velocity = c.vector("velocity", d, {0, 0, 0});
+        cs.ramp = c.number("ramp", Range::non_negative(), 0.0);
         c.reject_unknown();
         s.walls.blocks.push_back(cs);
       }

@@ -111,6 +111,7 @@ struct ContainerSpec {
   std::array<double, 3> lo{}, hi{};   // the inner (fluid-side) faces of the walls
   std::vector<std::string> open;      // sides without a wall: left right bottom top front back
   std::array<double, 3> velocity{};   // blocks only: prescribed constant velocity (e.g. a footing pushed down)
+  double ramp = 0;                    // blocks only: the velocity is reached over `ramp` seconds (smooth start)
 };
 
 struct WallSpec {

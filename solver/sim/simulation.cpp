@@ -150,9 +150,15 @@ void Simulation::step() {
   const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
   const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
   kick(half);
+  const auto& blocks = scene_.walls.blocks;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity
+    if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity (ramped: at mid-step)
+      const auto& b = blocks[static_cast<std::size_t>(block[i]) - 1];
+      if (b.ramp > 0) {
+        const double f = smooth_start(t_ + half, b.ramp);
+        P.vx[i] = f * b.velocity[0]; P.vy[i] = f * b.velocity[1]; P.vz[i] = f * b.velocity[2];
+      }
       P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
       continue;
     }

@@ -12,6 +12,7 @@
 #include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 #include "cases/oscillating_plate/oscillating_plate.hpp"
 #include "cases/poiseuille_flow/poiseuille_flow.hpp"
+#include "cases/quicksand/quicksand.hpp"
 #include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
 #include "cases/soil_under_free_water/soil_under_free_water.hpp"
 #include "cases/strip_footing/strip_footing.hpp"
@@ -39,6 +40,7 @@ const std::vector<CaseEntry>& catalogue() {
       {"terzaghi_consolidation", run_terzaghi_consolidation},
       {"darcy_seepage", run_darcy_seepage},
       {"soil_under_free_water", run_soil_under_free_water},
+      {"quicksand", run_quicksand},
   };
   return cases;
 }

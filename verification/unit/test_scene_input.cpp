@@ -10,6 +10,7 @@
 
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
+#include "sim/simulation.hpp"
 #include "test_scenes.hpp"
 
 using namespace geosph;
@@ -299,4 +300,30 @@ TEST(SceneInput, StructureNeedsInterfaceFrictionAndAStructuralMaterial) {
   j = soil_structure_scene();
   j["bodies"][1]["fixed"] = true;
   expect_error(j, "motion", "cannot be combined with \"fixed\"");
+}
+
+// A wall block with a velocity ramp starts at rest and reaches its velocity with the smooth start of
+// Adami et al. (2012, eq. 33): after the ramp it has travelled v (t - ramp/2) (the ramp's mean is 1/2).
+TEST(SceneInput, WallBlockRampStartsFromRest) {
+  nlohmann::json j = nlohmann::json::parse(R"({
+    "name": "piston", "dimension": 2, "dx": 0.02,
+    "domain": {"min": [0, -0.2], "max": [0.2, 0.6], "periodic": ["x"]},
+    "gravity": [0, 0], "time": {"end": 0.3},
+    "materials": {"water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
+    "bodies": [{"material": "water", "shape": "box", "min": [0, 0.1], "max": [0.2, 0.3]}],
+    "walls": {"type": "dummy", "blocks": [{"min": [0, -0.1], "max": [0.2, 0.0], "velocity": [0, 0.01], "ramp": 0.1}]}
+  })");
+  geosph::Simulation sim(geosph::parse_scene(j, "piston.json"));
+  const auto& P0 = sim.particles();
+  std::size_t b = P0.size();
+  for (std::size_t i = 0; i < P0.size(); ++i)
+    if (P0.kind[i] == geosph::Kind::DummyWall) { b = i; break; }
+  ASSERT_LT(b, P0.size());
+  const double y0 = P0.y[b];
+  EXPECT_EQ(P0.vy[b], 0.0);
+  sim.run();
+  EXPECT_NEAR(sim.particles().y[b] - y0, 0.01 * (0.3 - 0.05), 1e-7);
+  EXPECT_DOUBLE_EQ(sim.particles().vy[b], 0.01);
+  j["walls"]["blocks"][0]["ramp"] = -1;
+  EXPECT_THROW(geosph::parse_scene(j, "piston.json"), geosph::InputError);
 }
