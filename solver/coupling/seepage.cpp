@@ -250,18 +250,24 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   // 2. drag: each particle's rate C_i = sum_j c_ij and its partner phase's c-weighted velocity,
   //    acceleration (without drag) and partial density, for the implicit update in Simulation::kick.
   //    c_ij = beta V_j W_ij 2/(S_i + S_j) / rho_i, beta of the soil particle of the pair.
+  //    beta of every particle once (0: not a saturated skeleton particle), not per pair: the pair loop
+  //    was a quarter of the coupled step's time with the material lookup and division inside it
+  beta_.resize(n);
+  double* bs = beta_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) bs[i] = saturated(i) ? beta(i) : 0.0;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
     C[i] = 0;
-    if (!saturated(i) && ki != Kind::Fluid) continue;
-    const double rhoi = P.rho[i];
+    if (!(bs[i] > 0) && ki != Kind::Fluid) continue;
+    const bool soil_i = ki == Kind::Soil;
+    const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
     double c = 0, sv[3] = {0, 0, 0}, sa[3] = {0, 0, 0}, sr = 0;
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double, double, double, double r2) {
-      const bool pair = ki == Kind::Soil ? P.kind[j] == Kind::Fluid : saturated(j);
-      if (!pair) return;
-      const double b = ki == Kind::Soil ? beta(i) : beta(j);
-      const double cij = b * (P.m[j] / P.rho[j]) * kernel.W(std::sqrt(r2)) * 2.0 / (S[i] + S[j]) / rhoi;
+      const double b = soil_i ? (P.kind[j] == Kind::Fluid ? bi : 0.0) : bs[j];  // the pair's skeleton beta
+      if (!(b > 0)) return;
+      const double cij = b * (P.m[j] / P.rho[j]) * kernel.W(std::sqrt(r2)) * 2.0 / ((Si + S[j]) * rhoi);
       c += cij;
       sv[0] += cij * P.vx[j]; sv[1] += cij * P.vy[j]; sv[2] += cij * P.vz[j];
       if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner

@@ -25,6 +25,7 @@
 // J. Comput. Phys. 138, 801-820, for dusty gas); the stored accelerations exclude the drag.
 #pragma once
 #include <array>
+#include <vector>
 
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -90,6 +91,7 @@ class Seepage {
 
   const Scene& scene_;
   double rho_w_, gamma_w_, mu_w_;
+  mutable std::vector<double> beta_;  // per-particle drag coefficient n^2 gamma_w / k (apply), scratch
 };
 
 }  // namespace geosph

@@ -3,6 +3,8 @@
 //   DamBreak2D         the 2D dam break (fluid; ~10k, ~40k, ~160k particles)
 //   GranularCollapse2D the aluminium-bar column collapse (Drucker-Prager soil; ~5k, ~20k, ~80k)
 //   GranularCollapseCamClay2D the same column as Modified Cam Clay (implicit return; same sizes)
+//   TwoPhaseConsolidation2D the Terzaghi layer: pore water + soil skeleton (coupling/seepage) in the same
+//                      space, N water and N skeleton particles (~2 x 5k, 2 x 20k, 2 x 80k material)
 //
 // Each scene is the catalogue one with only dx changed, so that its first body (the water column,
 // the soil column) holds about N particles: dx = sqrt(body area / N). Building the Simulation (particles, cell
@@ -77,7 +79,8 @@ void register_all() {
   const std::vector<Case> cases = {
       {"DamBreak2D/step", "dam_break_2d", {{10'000, 800}, {40'000, 200}, {160'000, 50}}},
       {"GranularCollapse2D/step", "granular_collapse_bui", {{5'000, 800}, {20'000, 200}, {80'000, 50}}},
-      {"GranularCollapseCamClay2D/step", "granular_collapse_cam_clay", {{5'000, 800}, {20'000, 200}, {80'000, 50}}}};
+      {"GranularCollapseCamClay2D/step", "granular_collapse_cam_clay", {{5'000, 800}, {20'000, 200}, {80'000, 50}}},
+      {"TwoPhaseConsolidation2D/step", "terzaghi_consolidation", {{5'000, 400}, {20'000, 100}, {80'000, 25}}}};
   for (const auto& c : cases)
   for (const Size sz : c.sizes)
     for (const long threads : {1L, 2L})
