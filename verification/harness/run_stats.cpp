@@ -70,6 +70,16 @@ std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& 
   return out;
 }
 
+std::vector<Record> run_each_variant(
+    const CaseContext& ctx, const std::string& name,
+    const std::function<Record(const CaseConfig&, const CaseContext&, const std::string&, double)>& run_variant) {
+  const CaseConfig cfg = load_case(ctx, name);
+  std::vector<Record> out;
+  for (const auto& v : cfg.spec.at("variants").items())
+    for (double dx : cfg.level_numbers("dx")) out.push_back(run_variant(cfg, ctx, v.key(), dx));
+  return out;
+}
+
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points) {
   return field_snapshot(sim, "pressure", "Pa", max_points);
 }

@@ -19,6 +19,12 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
 std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& name,
                                      const std::function<Record(const CaseConfig&, const CaseContext&, double)>& run_at);
 
+// Runs `run_variant` for each entry of case.json's "variants" (in file order) at each spacing of the
+// requested level (coarse to fine).
+std::vector<Record> run_each_variant(
+    const CaseContext& ctx, const std::string& name,
+    const std::function<Record(const CaseConfig&, const CaseContext&, const std::string&, double)>& run_variant);
+
 // Final particle snapshot (fluid only, at most max_points) coloured by pressure.
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points = 6000);
 // Snapshot of any moving-particle field ("pressure" or an optional field such as "plastic_strain").

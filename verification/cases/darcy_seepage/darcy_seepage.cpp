@@ -111,12 +111,6 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 
 }  // namespace
 
-std::vector<Record> run_darcy_seepage(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "darcy_seepage");
-  std::vector<Record> out;
-  for (const auto& v : cfg.spec.at("variants").items())
-    for (double dx : cfg.level_numbers("dx")) out.push_back(run_variant(cfg, ctx, v.key(), dx));
-  return out;
-}
+std::vector<Record> run_darcy_seepage(const CaseContext& ctx) { return run_each_variant(ctx, "darcy_seepage", run_variant); }
 
 }  // namespace geosph::verify

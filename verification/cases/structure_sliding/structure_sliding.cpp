@@ -163,11 +163,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 
 // Each variant at each spacing of the level (coarse to fine).
 std::vector<Record> run_structure_sliding(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "structure_sliding");
-  std::vector<Record> out;
-  for (const auto& v : cfg.spec.at("variants").items())
-    for (double dx : cfg.level_numbers("dx")) out.push_back(run_variant(cfg, ctx, v.key(), dx));
-  return out;
+  return run_each_variant(ctx, "structure_sliding", run_variant);
 }
 
 }  // namespace geosph::verify
