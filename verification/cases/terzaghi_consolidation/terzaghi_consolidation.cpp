@@ -70,7 +70,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     return sum;
   };
 
-  std::vector<double> err_all, zero_all;
+  std::vector<double> err_all;
   Series U_sph{"SPH (settlement)", "simulation", "degree_of_consolidation", "T = c_v t / H^2", "U = s / s_inf", {}, {}};
   Series U_ref{"series solution", "analytical", "degree_of_consolidation", U_sph.xlabel, U_sph.ylabel, {}, {}};
   double next_U = 0, U_err_max = 0;
@@ -96,7 +96,6 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
         sph.x.push_back(u[r] / Bq); sph.y.push_back(-z / H);
         an.x.push_back(ur / Bq); an.y.push_back(-z / H);
         err_all.push_back(u[r] - ur);
-        zero_all.push_back(0.0);
       }
       rec.series.push_back(sph);
       rec.series.push_back(an);
