@@ -51,11 +51,11 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
     P.add(x, y, z, m.density * vol, m.density, kind, mat);
     if (b.structure) P.field("structure_body").back() = static_cast<double>(body_index + 1);
     if (b.fixed) P.field("fixed").back() = 1.0;
+    else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
     if (b.surcharge.pressure > 0 && (up == 1 ? y : z) > b.hi[up] - s.dx) {  // top row carries the surcharge
       P.field("surcharge").back() = b.surcharge.pressure;
       P.field("surcharge_ramp").back() = b.surcharge.ramp;
     }
-    else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
     const std::size_t i = P.size() - 1;
     if (geostatic) {
       const double depth = b.hi[up] - (up == 1 ? y : z);

@@ -111,10 +111,7 @@ void Simulation::apply_surcharge() {
   const double area = std::pow(scene_.dx, scene_.dim - 1);
   std::vector<double>& a = scene_.dim == 2 ? P_.ay : P_.az;
   for (std::size_t i = 0; i < P_.size(); ++i)
-    if (q[i] > 0) {
-      const double f = ramp[i] > 0 && t_ < ramp[i] ? smooth_start(t_, ramp[i]) : 1.0;
-      a[i] -= f * q[i] * area / P_.m[i];
-    }
+    if (q[i] > 0) a[i] -= smooth_start(t_, ramp[i]) * q[i] * area / P_.m[i];  // 1 after the ramp
 }
 
 void Simulation::kick(double half) {

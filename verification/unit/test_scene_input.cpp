@@ -327,3 +327,25 @@ TEST(SceneInput, WallBlockRampStartsFromRest) {
   j["walls"]["blocks"][0]["ramp"] = -1;
   EXPECT_THROW(geosph::parse_scene(j, "piston.json"), geosph::InputError);
 }
+
+// A body's initial velocity reaches every particle, also the top row that carries a surcharge (the
+// surcharge once took the place of the "not fixed" branch and left the top row at rest).
+TEST(SceneInput, SurchargedBodyKeepsItsInitialVelocity) {
+  nlohmann::json j = nlohmann::json::parse(R"({
+    "name": "block", "dimension": 2, "dx": 0.05,
+    "domain": {"min": [0, 0], "max": [1, 1], "periodic": ["x"]},
+    "gravity": [0, 0], "time": {"end": 0.2},
+    "materials": {"clay": {"model": "linear_elastic", "density": 2000, "young_modulus": 1e6, "poisson_ratio": 0.3}},
+    "bodies": [{"material": "clay", "shape": "box", "min": [0, 0.2], "max": [1, 0.5], "velocity": [0.1, 0],
+                "surcharge": {"pressure": 100, "ramp": 0.1}}]
+  })");
+  geosph::Simulation sim(geosph::parse_scene(j, "block.json"));
+  const auto& P = sim.particles();
+  int top = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != geosph::Kind::Soil) continue;
+    EXPECT_DOUBLE_EQ(P.vx[i], 0.1) << "particle at y = " << P.y[i];
+    if (P.y[i] > 0.45) ++top;
+  }
+  EXPECT_EQ(top, 20);
+}
