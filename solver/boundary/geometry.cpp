@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "soil/modified_cam_clay.hpp"
 #include "soil/soil_fields.hpp"
@@ -158,7 +159,7 @@ Particles build_particles(const Scene& s) {
   // in it (a clamp), so its particles keep their own velocity instead of mirroring the material's.
   for (std::size_t k = 0; k < s.walls.blocks.size(); ++k) {
     const auto& b = s.walls.blocks[k];
-    const double f = b.ramp > 0 ? 0.0 : 1.0;  // a ramped block starts at rest (Simulation::step)
+    const double f = smooth_start(0.0, b.ramp);  // a ramped block starts at rest (Simulation::step)
     lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
       P.field("wall_block").back() = static_cast<double>(k + 1);

@@ -321,9 +321,7 @@ static void validate_two_phase(const Scene& s) {
   if (s.materials.size() > 1) fail("materials", "a two-phase scene (saturated soil) takes one fluid, its pore water");
   for (std::size_t k = 0; k < s.bodies.size(); ++k) {
     const BodySpec& b = s.bodies[k];
-    const SoilMaterial* m = nullptr;
-    for (const auto& sm : s.soils)
-      if (sm.name == b.material) m = &sm;
+    const SoilMaterial* m = s.find_soil(b.material);
     if (!m || b.structure) continue;
     const std::string field = "bodies[" + std::to_string(k) + "]";
     if (!m->saturated())

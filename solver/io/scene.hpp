@@ -151,6 +151,12 @@ struct Scene {
   std::vector<BodySpec> bodies;
   WallSpec walls;
   bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty(); }
+  // The soil (or structure) material called `name`, null if there is none.
+  const SoilMaterial* find_soil(const std::string& name) const {
+    for (const auto& m : soils)
+      if (m.name == name) return &m;
+    return nullptr;
+  }
   // Saturated soil and its pore water (the scene's fluid) as two particle sets (coupling/seepage.hpp).
   bool two_phase() const {
     if (!has_fluid()) return false;

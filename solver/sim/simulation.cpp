@@ -152,10 +152,8 @@ void Simulation::step() {
   for (std::size_t i = 0; i < n; ++i) {
     if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity (ramped: at mid-step)
       const auto& b = blocks[static_cast<std::size_t>(block[i]) - 1];
-      if (b.ramp > 0) {
-        const double f = smooth_start(t_ + half, b.ramp);
-        P.vx[i] = f * b.velocity[0]; P.vy[i] = f * b.velocity[1]; P.vz[i] = f * b.velocity[2];
-      }
+      const double f = smooth_start(t_ + half, b.ramp);  // 1 without a ramp
+      P.vx[i] = f * b.velocity[0]; P.vy[i] = f * b.velocity[1]; P.vz[i] = f * b.velocity[2];
       P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
       continue;
     }

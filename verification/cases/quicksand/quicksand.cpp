@@ -23,9 +23,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const BodySpec* sand = nullptr;
   for (const auto& b : scene.bodies)
     if (b.material == "sand") sand = &b;
-  const SoilMaterial* m = nullptr;
-  for (const auto& s : scene.soils)
-    if (s.name == "sand") m = &s;
+  const SoilMaterial* m = scene.find_soil("sand");
   if (!sand || !m) throw std::runtime_error("quicksand: the scene needs a body of material 'sand'");
   const double g = -scene.gravity[1], dx = scene.dx, gamma_w = w.density * g;
   const double lo = sand->lo[1], hi = sand->hi[1], L = hi - lo;

@@ -61,9 +61,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   const std::size_t slab_body = 1;
   const BodySpec& soil = scene.bodies[0];
   const BodySpec& slab = scene.bodies[slab_body];
-  const SoilMaterial* mat = nullptr;
-  for (const auto& m : scene.soils)
-    if (m.name == soil.material) mat = &m;
+  const SoilMaterial* mat = scene.find_soil(soil.material);
   const double g = std::hypot(scene.gravity[0], scene.gravity[1]);
   const double theta = std::atan2(scene.gravity[0], -scene.gravity[1]);
   const double tan_delta = std::tan(slab.interface_friction_angle * kDeg);
