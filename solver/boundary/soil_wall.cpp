@@ -1,5 +1,6 @@
 #include "boundary/soil_wall.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "soil/soil_forces.hpp"
@@ -32,7 +33,12 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           if (P.kind[w] != Kind::DummyWall) continue;
           double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;
           std::uint16_t mat = 0;
+          bool covered = false;  // the centre lies inside a structure particle's cell: the structure is there
           cells.for_each_neighbor(P, w, [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
+            if (is_structure(P.kind[k])) {
+              covered = covered || std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) < 0.5 * scene_.dx;
+              return;
+            }
             if (P.kind[k] != Kind::Soil) return;
             const double W = kernel.W(std::sqrt(r2));
             sw += W;
@@ -45,8 +51,8 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           });
           const double rho0 = scene_.soils[mat].density;
           P.rho[w] = rho0;
-          P.m[w] = rho0 * volume;
-          if (sw <= 0) {
+          P.m[w] = covered ? 0.0 : rho0 * volume;  // a covered ghost leaves the soil's sums
+          if (sw <= 0 || covered) {
             for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
             P.p[w] = 0;
             for (int a = 0; a < 3; ++a) wv[a][w] = 0;

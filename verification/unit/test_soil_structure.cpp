@@ -110,3 +110,47 @@ TEST(RigidMotion, TranslationAndRotationFollowThePrescribedPath) {
   EXPECT_LT(err, 1e-9);
   EXPECT_NEAR(sim.rigid_motions()->rotation(0), th, 1e-12);
 }
+
+// A container's dummy particles that a structure covers (the floor under a retaining wall) are the
+// structure's space, not an image of the soil: they leave the soil's sums (zero mass), while the
+// floor under the soil keeps its ghost mass rho0 dx^2 (boundary/soil_wall.hpp).
+TEST(SoilWalls, GhostsCoveredByAStructureLeaveTheSoilSums) {
+  json j = json::parse(R"({
+    "name": "covered", "dimension": 2, "dx": 0.05,
+    "domain": {"min": [-0.7, -0.5], "max": [1.3, 1.0]},
+    "gravity": [0, -9.81],
+    "time": {"end": 1e-4},
+    "materials": {
+      "sand": {"model": "drucker_prager", "density": 1700, "young_modulus": 5e6, "poisson_ratio": 0.3,
+               "friction_angle": 30},
+      "wall": {"model": "linear_elastic", "density": 2500, "young_modulus": 5e6, "poisson_ratio": 0.2}
+    },
+    "bodies": [
+      {"material": "sand", "shape": "box", "min": [0, 0], "max": [1.0, 0.5], "initial": "geostatic"},
+      {"material": "wall", "shape": "box", "min": [-0.2, -0.2], "max": [0, 0.6], "structure": true,
+       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
+    ],
+    "walls": {"type": "dummy", "slip": "free_slip",
+              "containers": [{"min": [-0.4, 0], "max": [1.0, 0.7], "open": ["left", "top"]}]}
+  })");
+  Simulation sim(parse_scene(j, "covered.json"));
+  sim.run();
+  const Particles& P = sim.particles();
+  int covered = 0, under_soil = 0, beside = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::DummyWall || P.y[i] > 0) continue;
+    if (P.x[i] > -0.2 && P.x[i] < 0) {  // under the wall
+      EXPECT_EQ(P.m[i], 0.0) << "floor ghost at (" << P.x[i] << ", " << P.y[i] << ") inside the wall";
+      ++covered;
+    } else if (P.x[i] > 0 && P.x[i] < 1.0) {
+      EXPECT_NEAR(P.m[i], 1700 * 0.05 * 0.05, 1e-9);
+      ++under_soil;
+    } else if (P.x[i] < -0.2) {
+      ++beside;  // left of the wall: no soil within reach, kept as a (stress-free) ghost
+      EXPECT_GT(P.m[i], 0.0);
+    }
+  }
+  EXPECT_GT(covered, 0);
+  EXPECT_GT(under_soil, 0);
+  EXPECT_GT(beside, 0);
+}
