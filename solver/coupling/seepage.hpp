@@ -18,8 +18,9 @@
 //                                equal and opposite on j (Bui & Fukagawa 2013, eq. 27 with pairwise weights);
 //                                S = sum V W over the other phase (the lattice sum is not exactly 1: 0.4%
 //                                too much drag without it, measured on the Darcy case)
-//   pore-pressure gradient at soil i  grad p_i = sum_j V_j (p_j - p~_i) grad_i W_ij over water and
-//                                water-wall particles, p~_i their Shepard average (exact for constant p)
+//   pore-pressure force on soil i   the adjoint of the water's porosity rate (energy-consistent; see
+//                                Seepage::apply_with), relative to the Shepard-averaged pressure where the
+//                                porosity jumps under free water (a constant pressure exerts no force)
 // The drag is integrated implicitly for each particle and its partner phase (Seepage::kick), so the
 // relaxation time k/(n g) does not limit the time step (as the implicit drag of Monaghan 1997,
 // J. Comput. Phys. 138, 801-820, for dusty gas); the stored accelerations exclude the drag.
