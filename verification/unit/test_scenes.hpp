@@ -20,4 +20,24 @@ inline nlohmann::json soil_column_scene(double dx = 0.01) {
   return j;
 }
 
+// Dry soil behind a rigid retaining wall (a structure body with prescribed motion).
+inline nlohmann::json soil_structure_scene() {
+  return nlohmann::json::parse(R"({
+    "name": "wall", "dimension": 2, "dx": 0.05,
+    "domain": {"min": [-0.5, -0.3], "max": [2.5, 1.5]},
+    "gravity": [0, -9.81],
+    "time": {"end": 1.0},
+    "materials": {
+      "sand": {"model": "drucker_prager", "density": 1700, "young_modulus": 5e6, "poisson_ratio": 0.3,
+               "friction_angle": 30},
+      "steel": {"model": "linear_elastic", "density": 7800, "young_modulus": 2e8, "poisson_ratio": 0.3}
+    },
+    "bodies": [
+      {"material": "sand", "shape": "box", "min": [0, 0], "max": [2, 1], "initial": "geostatic"},
+      {"material": "steel", "shape": "box", "min": [-0.1, 0], "max": [0, 1.2], "structure": true,
+       "interface_friction_angle": 20, "motion": {"velocity": [-0.01, 0]}}
+    ]
+  })");
+}
+
 }  // namespace geosph::test

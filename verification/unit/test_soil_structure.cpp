@@ -10,6 +10,7 @@
 #include "coupling/soil_structure_contact.hpp"
 #include "io/scene.hpp"
 #include "sim/simulation.hpp"
+#include "test_scenes.hpp"
 
 using namespace geosph;
 using nlohmann::json;
@@ -115,24 +116,14 @@ TEST(RigidMotion, TranslationAndRotationFollowThePrescribedPath) {
 // structure's space, not an image of the soil: they leave the soil's sums (zero mass), while the
 // floor under the soil keeps its ghost mass rho0 dx^2 (boundary/soil_wall.hpp).
 TEST(SoilWalls, GhostsCoveredByAStructureLeaveTheSoilSums) {
-  json j = json::parse(R"({
-    "name": "covered", "dimension": 2, "dx": 0.05,
-    "domain": {"min": [-0.7, -0.5], "max": [1.3, 1.0]},
-    "gravity": [0, -9.81],
-    "time": {"end": 1e-4},
-    "materials": {
-      "sand": {"model": "drucker_prager", "density": 1700, "young_modulus": 5e6, "poisson_ratio": 0.3,
-               "friction_angle": 30},
-      "wall": {"model": "linear_elastic", "density": 2500, "young_modulus": 5e6, "poisson_ratio": 0.2}
-    },
-    "bodies": [
-      {"material": "sand", "shape": "box", "min": [0, 0], "max": [1.0, 0.5], "initial": "geostatic"},
-      {"material": "wall", "shape": "box", "min": [-0.2, -0.2], "max": [0, 0.6], "structure": true,
-       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
-    ],
-    "walls": {"type": "dummy", "slip": "free_slip",
-              "containers": [{"min": [-0.4, 0], "max": [1.0, 0.7], "open": ["left", "top"]}]}
-  })");
+  // the retaining-wall scene, its wall reaching 0.2 m into a dummy floor that runs on under it
+  json j = test::soil_structure_scene();
+  j["domain"] = {{"min", {-0.7, -0.5}}, {"max", {2.5, 1.7}}};
+  j["time"]["end"] = 1e-4;
+  j["bodies"][1]["min"] = {-0.2, -0.2};
+  j["bodies"][1]["motion"]["velocity"] = {0, 0};
+  j["walls"] = json::parse(R"({"type": "dummy", "slip": "free_slip",
+                              "containers": [{"min": [-0.4, 0], "max": [2.0, 1.3], "open": ["left", "top"]}]})");
   Simulation sim(parse_scene(j, "covered.json"));
   sim.run();
   const Particles& P = sim.particles();
@@ -142,7 +133,7 @@ TEST(SoilWalls, GhostsCoveredByAStructureLeaveTheSoilSums) {
     if (P.x[i] > -0.2 && P.x[i] < 0) {  // under the wall
       EXPECT_EQ(P.m[i], 0.0) << "floor ghost at (" << P.x[i] << ", " << P.y[i] << ") inside the wall";
       ++covered;
-    } else if (P.x[i] > 0 && P.x[i] < 1.0) {
+    } else if (P.x[i] > 0 && P.x[i] < 2.0) {
       EXPECT_NEAR(P.m[i], 1700 * 0.05 * 0.05, 1e-9);
       ++under_soil;
     } else if (P.x[i] < -0.2) {
