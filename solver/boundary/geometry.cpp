@@ -7,7 +7,6 @@
 
 #include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
-#include "soil/modified_cam_clay.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph {
@@ -31,8 +30,8 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
 
 // Soil body on the lattice. "geostatic": vertical stress -rho g depth and horizontal K0 times it
 // (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement); "isotropic":
-// sigma = -pressure I (saturated soil: effective stresses, from the buoyant weight). Modified Cam Clay: the preconsolidation pressure is OCR times that of the
-// yield locus through the initial stress (p' floored at min_pressure at the free surface).
+// sigma = -pressure I (saturated soil: effective stresses, from the buoyant weight). A model with state
+// fields initialises them from this stress (materials/solid_model.hpp: initialise).
 // Structure bodies are built the same way (at rest) as Kind::Structure, or Kind::RigidStructure when
 // their motion is prescribed, and carry their body number + 1 in the field "structure_body".
 void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t body_index) {
@@ -42,7 +41,7 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
   const double vol = std::pow(s.dx, s.dim);
   const int up = s.dim - 1;  // gravity acts along -y (2D) or -z (3D); checked in validate_scene
   const double g = -s.gravity[up] * s.initial_gravity_factor();  // geostatic state at the gravity of t = 0
-  const double k0 = b.k0 > 0 ? b.k0 : m.poisson / (1.0 - m.poisson);
+  const double k0 = b.k0 > 0 ? b.k0 : m.poisson_ratio() / (1.0 - m.poisson_ratio());
   const bool geostatic = b.initial == "geostatic", isotropic = b.initial == "isotropic";
   // saturated soil: the effective stress carries the buoyant weight (rho_d - (1 - n0) rho_w) g
   const double rho_geo = m.saturated() && s.has_fluid() ? m.density - (1.0 - m.porosity) * s.materials.front().density
@@ -69,14 +68,14 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
       for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz}) P.field(f)[i] = -b.pressure;
       P.p[i] = b.pressure;
     }
-    if (m.is_cam_clay()) {
+    std::visit([&](const auto& model) {  // the model's own state (e.g. Modified Cam Clay's p_c)
+      if (model.state_fields.empty()) return;
+      materials::SolidState st;
+      for (std::size_t f = 0; f < model.state_fields.size(); ++f) st.f[f] = P.field(model.state_fields[f]).data();
       const Eigen::Matrix3d sigma = Eigen::Vector3d(P.field(SoilFields::xx)[i], P.field(SoilFields::yy)[i],
                                                     P.field(SoilFields::zz)[i]).asDiagonal();
-      using MCC = soil::ModifiedCamClay;
-      P.field(SoilFields::preconsolidation)[i] = MCC::preconsolidation_for(
-          std::max(MCC::mean_effective_stress(sigma), m.min_pressure), MCC::deviator_stress(sigma),
-          m.critical_state_slope, b.ocr);
-    }
+      model.initialise(sigma, b, st, i);
+    }, m.model);
   });
 }
 

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "io/json_fields.hpp"
+#include "materials/model_list.hpp"
 
 namespace geosph {
 
@@ -17,22 +18,6 @@ bool is_solid_material(const Scene& s, const std::string& name) {
   return false;
 }
 
-FluidMaterial parse_fluid(const JsonFields& f, const std::string& name) {
-  FluidMaterial m;
-  m.name = name;
-  f.choice("model", {"tait_fluid"});
-  m.density = f.number("density", Range::positive());
-  m.sound_speed = f.number("sound_speed", Range::positive());
-  m.gamma = f.number("gamma", Range::between(1, 15), 7.0);
-  m.background_pressure = f.number("background_pressure", Range::non_negative(), 0.0);
-  m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.0);
-  m.kinematic_viscosity = f.number("kinematic_viscosity", Range::non_negative(), 0.0);
-  m.density_diffusion = f.number("density_diffusion", Range::between(0, 1), 0.0);
-  m.density_diffusion_hydrostatic = f.boolean("density_diffusion_hydrostatic", false);
-  f.reject_unknown();
-  return m;
-}
-
 // min/max corners of a box, max > min on every axis
 ContainerSpec parse_box(const JsonFields& f, int dim) {
   ContainerSpec b;
@@ -43,63 +28,7 @@ ContainerSpec parse_box(const JsonFields& f, int dim) {
   return b;
 }
 
-SoilMaterial parse_soil(const JsonFields& f, const std::string& name) {
-  SoilMaterial m;
-  m.name = name;
-  m.model = f.choice("model", {"drucker_prager", "modified_cam_clay", "linear_elastic", "von_mises"});
-  m.density = f.number("density", Range::positive());
-  if (!m.is_cam_clay()) m.young = f.number("young_modulus", Range::positive());
-  m.poisson = f.number("poisson_ratio", Range::open(-1.0, 0.5));
-  if (m.is_cam_clay()) {
-    m.kappa = f.number("kappa", Range::positive());
-    m.lambda = f.number("lambda", Range::positive());
-    if (!(m.lambda > m.kappa))
-      f.fail("lambda", "must be greater than kappa (" + std::to_string(m.kappa) + "), got " + std::to_string(m.lambda));
-    m.critical_state_slope = f.number("critical_state_slope", Range::open(0, 3));
-    m.void_ratio = f.number("void_ratio", Range::open(0, 20));
-    m.min_pressure = f.number("min_pressure", Range::positive(), 100.0);
-  }
-  if (m.model == "drucker_prager") {
-    m.cohesion = f.number("cohesion", Range::non_negative(), 0.0);
-    m.friction_angle = f.number("friction_angle", Range{0, 90, false, true});
-    m.dilatancy_angle = f.number("dilatancy_angle", Range{0, 90, false, true}, 0.0);
-  }
-  if (m.model == "von_mises") {  // J2 plasticity = Drucker-Prager with phi = 0: sqrt(J2) <= k = sigma_y / sqrt(3)
-    m.yield_stress = f.number("yield_stress", Range::positive());
-    m.cohesion = m.yield_stress / std::sqrt(3.0);
-  }
-  if (m.dilatancy_angle > m.friction_angle)
-    f.fail("dilatancy_angle", "must not exceed friction_angle (" + std::to_string(m.friction_angle) + " deg), got " +
-                                  std::to_string(m.dilatancy_angle));
-  if (m.model != "von_mises") {  // saturated soil (two-phase); linear_elastic: an elastic skeleton
-    m.porosity = f.number("porosity", Range::open(0, 1), 0.0);
-    if (f.has("hydraulic_conductivity") || f.has("grain_size")) {
-      if (!m.saturated()) f.fail("porosity", "is required with hydraulic_conductivity or grain_size (saturated soil)");
-      if (f.has("hydraulic_conductivity") && f.has("grain_size"))
-        f.fail("grain_size", "give either hydraulic_conductivity or grain_size, not both");
-      if (f.has("hydraulic_conductivity")) m.hydraulic_conductivity = f.number("hydraulic_conductivity", Range::positive());
-      else m.grain_size = f.number("grain_size", Range::positive());
-    } else if (m.saturated()) {
-      f.fail("hydraulic_conductivity", "is missing: saturated soil (porosity given) needs hydraulic_conductivity [m/s] > 0 "
-                                       "or grain_size [m] > 0 (Kozeny-Carman)");
-    }
-  }
-  m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
-  m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
-  if (auto a = f.optional_object("artificial_stress")) {
-    m.artificial_stress = a->number("epsilon", Range::between(0, 1));
-    m.artificial_stress_exponent = a->number("exponent", Range::between(1, 10), 4.0);
-    a->reject_unknown();
-  }
-  f.reject_unknown();
-  return m;
-}
-
 }  // namespace
-
-double SoilMaterial::wave_speed() const {
-  return p_wave_speed(young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson)), density);
-}
 
 Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   Scene s;
@@ -158,10 +87,12 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   auto mats = top.object("materials");
   for (const auto& name : mats.keys()) {
     auto m = mats.object(name);
-    const std::string model =
-        m.choice("model", {"tait_fluid", "drucker_prager", "modified_cam_clay", "linear_elastic", "von_mises"});
-    if (model == "tait_fluid") s.materials.push_back(parse_fluid(m, name));
-    else s.soils.push_back(parse_soil(m, name));
+    std::vector<std::string> models = fluid_model_names();
+    const std::vector<std::string> solids = solid_model_names();
+    models.insert(models.end(), solids.begin(), solids.end());
+    const std::string model = m.choice("model", models);
+    if (model == "tait_fluid") s.materials.push_back(parse_fluid_material(m, name));
+    else s.soils.push_back(parse_solid_material(m, name, model));
   }
   if (s.materials.empty() && s.soils.empty()) mats.fail("", "must define at least one material");
   mats.reject_unknown();
@@ -169,16 +100,20 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   for (auto& b : top.array_of_objects("bodies")) {
     BodySpec body;
     body.material = b.text("material");
-    bool is_fluid = false, is_soil = false, is_cam_clay = false;
-    std::string solid_model;
+    bool is_fluid = false;
     for (const auto& m : s.materials) is_fluid = is_fluid || m.name == body.material;
-    for (const auto& m : s.soils)
-      if (m.name == body.material) { is_soil = true; is_cam_clay = m.is_cam_clay(); solid_model = m.model; }
+    const SoilMaterial* solid = s.find_soil(body.material);
+    const bool is_soil = solid != nullptr;
     if (!is_fluid && !is_soil) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
     body.structure = b.boolean("structure", false);
-    if (body.structure && solid_model != "linear_elastic" && solid_model != "von_mises")
-      b.fail("structure", "needs a linear_elastic or von_mises material; \"" + body.material + "\" is " +
-                              (is_fluid ? std::string("a fluid") : "\"" + solid_model + "\""));
+    const bool structure_allowed =
+        solid && std::visit([](const auto& m) { return m.structure_allowed; }, solid->model);
+    if (body.structure && !structure_allowed)
+      b.fail("structure", "needs a " +
+                              materials::ModelList<materials::SolidModel>::names_where(
+                                  [](const auto& m) { return m.structure_allowed; }) +
+                              " material; \"" + body.material + "\" is " +
+                              (is_fluid ? std::string("a fluid") : "\"" + solid->model_name() + "\""));
     b.choice("shape", {"box"});
     body.lo = b.vector("min", d);
     body.hi = b.vector("max", d);
@@ -189,13 +124,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
                                     : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");
     if (is_soil && b.has("k0")) body.k0 = b.number("k0", Range::open(0, 10));
     if (body.initial == "isotropic") body.pressure = b.number("pressure", Range::positive());
-    if (is_cam_clay) {
-      // Modified Cam Clay needs p' > 0 at start: its stiffness and yield locus scale with p'
-      if (body.initial == "rest")
-        b.fail("initial", "must be \"geostatic\" or \"isotropic\" for the modified_cam_clay material \"" + body.material +
-                              "\": the model needs an initial mean effective stress p' > 0, and \"rest\" gives p' = 0");
-      body.ocr = b.number("ocr", Range{1, 1000, false, false}, 1.0);
-    }
+    if (solid) std::visit([&](const auto& m) { m.read_body(b, body, body.material); }, solid->model);
     if (auto sc = b.optional_object("surcharge")) {
       if (!is_soil || body.structure) b.fail("surcharge", "is only allowed on soil bodies");
       body.surcharge.pressure = sc->number("pressure", Range::positive());
@@ -387,11 +316,12 @@ void validate_scene(const Scene& s) {
                std::string("\"geostatic\" needs gravity pointing along -") + (s.dim == 2 ? "y" : "z"));
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
     for (const auto& m : s.soils)
-      if (m.name == s.bodies[b].material && m.is_cam_clay() && s.bodies[b].initial == "geostatic" &&
+      if (m.name == s.bodies[b].material && s.bodies[b].initial == "geostatic" &&
+          std::visit([](const auto& model) { return model.needs_initial_pressure; }, m.model) &&
           !(s.gravity[s.dim - 1] * s.initial_gravity_factor() < 0))
         fail("bodies[" + std::to_string(b) + "].initial",
-             "\"geostatic\" without gravity at t = 0 gives p' = 0, but the modified_cam_clay material \"" + m.name +
-                 "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
+             "\"geostatic\" without gravity at t = 0 gives p' = 0, but the " + m.model_name() + " material \"" +
+                 m.name + "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
   validate_structures(s);
   validate_two_phase(s);
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")

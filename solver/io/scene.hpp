@@ -10,68 +10,10 @@
 
 #include "core/cell_list.hpp"
 #include "core/kernels.hpp"
+#include "materials/solid_material.hpp"
+#include "materials/tait_fluid.hpp"
 
 namespace geosph {
-
-// Weakly compressible fluid (Tait equation of state, Monaghan 1994).
-struct FluidMaterial {
-  std::string name;
-  double density = 1000;              // reference density rho0 [kg/m^3]
-  double sound_speed = 0;             // artificial sound speed c0 [m/s]
-  double gamma = 7;                   // Tait exponent
-  double background_pressure = 0;     // [Pa]
-  double artificial_viscosity = 0;    // Monaghan alpha [-]
-  double kinematic_viscosity = 0;     // laminar nu [m^2/s] (Morris et al. 1997)
-  double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
-  // the diffusion acts on the dynamic density only, less the hydrostatic difference of each pair
-  // (Fourtakas et al. 2019, Comput. Fluids 190, 346-361, eq. 17); the plain form flattens the
-  // hydrostatic density gradient: a resting water column loses pressure at its base over time
-  bool density_diffusion_hydrostatic = false;
-};
-
-// An SPH solid material: soil (Drucker-Prager, Bui et al. 2008; Modified Cam Clay, Roscoe & Burland
-// 1968) or a structure (linear_elastic; von_mises, elastic-perfectly plastic, integrated as
-// Drucker-Prager with phi = 0 and k = yield_stress / sqrt(3)). Angles in degrees as written in the
-// scene; the stress is integrated with the Jaumann rate and its pressure comes from the constitutive
-// model (no equation of state).
-struct SoilMaterial {
-  std::string name;
-  std::string model = "drucker_prager";  // drucker_prager | modified_cam_clay | linear_elastic (no yield) | von_mises
-  double density = 0;                 // [kg/m^3]
-  double young = 0;                   // Young's modulus E [Pa]
-  double poisson = 0;                 // Poisson ratio nu, in (-1, 0.5)
-  double cohesion = 0;                // Mohr-Coulomb c [Pa]
-  double friction_angle = 0;          // Mohr-Coulomb phi [deg], in [0, 90)
-  double dilatancy_angle = 0;         // psi [deg], in [0, phi]
-  double yield_stress = 0;            // von_mises: uniaxial yield stress [Pa] (cohesion = yield_stress / sqrt(3))
-  // modified_cam_clay (soil/modified_cam_clay.hpp): pressure-dependent elasticity, no young_modulus
-  double lambda = 0;                  // slope of the normal compression line in v - ln p'
-  double kappa = 0;                   // slope of the unloading-reloading lines, 0 < kappa < lambda
-  double critical_state_slope = 0;    // M, in (0, 3)
-  double void_ratio = 0;              // e > 0 (v = 1 + e held constant: small-strain form)
-  double min_pressure = 100;          // p'_min [Pa]: floor on p' in the moduli (free surfaces)
-  bool is_cam_clay() const { return model == "modified_cam_clay"; }
-  // Saturated soil (two-phase, coupling/seepage.hpp): the skeleton's initial porosity n0 in (0, 1);
-  // `density` is then the dry (partial) density (1 - n0) rho_s of the skeleton. The hydraulic
-  // conductivity follows Kozeny-Carman, from its value at n0 or from the grain size.
-  double porosity = 0;                // n0; 0 = dry soil (no pore water)
-  double hydraulic_conductivity = 0;  // k at n0 [m/s] (0: from grain_size)
-  double grain_size = 0;              // d [m], Kozeny-Carman with the 180 constant (0: from hydraulic_conductivity)
-  bool saturated() const { return porosity > 0; }
-  double grain_density() const { return density / (1.0 - porosity); }  // rho_s
-  double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
-  double artificial_viscosity_beta = 0.0;
-  double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
-  double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
-  // P-wave speed from young and poisson: the time step's acoustic limit for drucker_prager and
-  // linear_elastic (Modified Cam Clay's moduli grow with p': SoilForces takes them from the model).
-  double wave_speed() const;
-};
-
-// P-wave speed sqrt((K + 4G/3)/rho).
-inline double p_wave_speed(double bulk, double shear, double density) {
-  return std::sqrt((bulk + 4.0 * shear / 3.0) / density);
-}
 
 struct BodySpec {
   std::string material;
@@ -82,6 +24,7 @@ struct BodySpec {
   double k0 = -1;                     // geostatic K0; < 0: nu/(1 - nu) (elastic, laterally confined)
   double pressure = 0;                // isotropic: initial mean effective stress p' [Pa]
   double ocr = 1;                     // modified_cam_clay: p_c = OCR x (p_c of the yield locus through the initial stress)
+                                      // (read by the model: materials/modified_cam_clay.cpp)
   // Surcharge: a vertical pressure on the body's top particle row (a fill, a footing load; permeable:
   // pore water drains through it), reaching `pressure` over `ramp` seconds with a smooth start.
   struct Surcharge {

@@ -11,8 +11,6 @@ namespace geosph {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // Stress fields as raw pointers; xz and yz exist only in 3D.
 struct StressView {
   double *xx, *yy, *zz, *xy, *xz, *yz;
@@ -43,18 +41,12 @@ inline bool continuum_pair(Kind ki, Kind kj) {
 
 SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
   for (const auto& m : scene.soils) {
-    models_.emplace_back();
-    cam_clay_.emplace_back();
-    if (m.is_cam_clay()) {
-      cam_clay_.back().emplace(soil::ModifiedCamClayParams{m.lambda, m.kappa, m.critical_state_slope, m.poisson,
-                                                           1.0 + m.void_ratio, m.min_pressure});
-      has_cam_clay_ = true;
-    } else {
-      models_.back().emplace(soil::DruckerPragerParams{m.young, m.poisson, m.cohesion, m.friction_angle * kDeg,
-                                                       m.dilatancy_angle * kDeg});
-      max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
-    }
-    elastic_only_.push_back(m.model == "linear_elastic");
+    wave_speed_.push_back(m.wave_speed());
+    if (m.pressure_dependent()) has_pressure_dependent_ = true;
+    else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
+    std::visit([&](const auto& model) {
+      for (const char* f : model.state_fields) state_fields_.insert(f);
+    }, m.model);
   }
 }
 
@@ -62,11 +54,20 @@ void SoilForces::allocate(Particles& P) const {
   for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::plastic_strain})
     P.field(f);
   if (P.dim == 3) { P.field(SoilFields::xz); P.field(SoilFields::yz); }
-  if (has_cam_clay_) {
-    for (const char* f : {SoilFields::preconsolidation, SoilFields::plastic_volumetric_strain, SoilFields::wave_speed})
-      P.field(f);
+  for (const auto& f : state_fields_) P.field(f);
+  if (has_pressure_dependent_) {
+    P.field(SoilFields::wave_speed);
     update_wave_speeds(P);
   }
+}
+
+std::vector<materials::SolidState> SoilForces::bind_states(Particles& P) const {
+  std::vector<materials::SolidState> states(scene_.soils.size());
+  for (std::size_t k = 0; k < scene_.soils.size(); ++k)
+    std::visit([&](const auto& model) {
+      for (std::size_t f = 0; f < model.state_fields.size(); ++f) states[k].f[f] = P.field(model.state_fields[f]).data();
+    }, scene_.soils[k].model);
+  return states;
 }
 
 void SoilForces::update_wave_speeds(Particles& P) const {
@@ -76,14 +77,12 @@ void SoilForces::update_wave_speeds(Particles& P) const {
 #pragma omp parallel for schedule(static) reduction(max : cmax)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(P.kind[i])) continue;
-    const auto mat = P.material[i];
-    const auto& mcc = cam_clay_[mat];
-    c[i] = mcc ? p_wave_speed(mcc->bulk_modulus(P.p[i]), mcc->shear_modulus(P.p[i]), scene_.soils[mat].density)
-               : scene_.soils[mat].wave_speed();
+    const SoilMaterial& m = scene_.soils[P.material[i]];
+    c[i] = std::visit([&](const auto& model) { return model.wave_speed(P.p[i], m.density); }, m.model);
     cmax = std::max(cmax, c[i]);
   }
   for (const auto& m : scene_.soils)
-    if (!m.is_cam_clay()) cmax = std::max(cmax, m.wave_speed());
+    if (!m.pressure_dependent()) cmax = std::max(cmax, m.wave_speed());
   max_wave_speed_ = cmax;
 }
 
@@ -108,8 +107,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
   const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
   const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
-  double* pc = has_cam_clay_ ? P.field(SoilFields::preconsolidation).data() : nullptr;
-  double* eps_v = has_cam_clay_ ? P.field(SoilFields::plastic_volumetric_strain).data() : nullptr;
+  const std::vector<materials::SolidState> states = bind_states(P);
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
   const int dim = scene_.dim;
@@ -164,26 +162,15 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         dw(a, b) = 0.5 * dt * (L[a][b] - L[b][a]);
       }
     const auto mat = P.material[i];
-    Eigen::Matrix3d stress;
-    double eq_plastic = 0;
-    if (const auto& mcc = cam_clay_[mat]) {
-      const auto r = mcc->update(sv.get(i), pc[i], de, dw);
-      if (!r.converged) {
+    const materials::SolidUpdate r = std::visit(
+        [&](const auto& model) { return model.update(sv.get(i), de, dw, states[mat], i); }, scene_.soils[mat].model);
+    if (!r.converged) {
 #pragma omp critical
-        if (unconverged < 0 || static_cast<long>(i) < unconverged) unconverged = static_cast<long>(i);
-        continue;
-      }
-      stress = r.stress;
-      eq_plastic = r.equivalent_plastic_strain_increment;
-      pc[i] = r.preconsolidation;
-      eps_v[i] += r.volumetric_plastic_strain_increment;
-    } else if (elastic_only_[mat]) {
-      stress = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + models_[mat]->elastic_increment(de);
-    } else {
-      const auto r = models_[mat]->update(sv.get(i), de, dw);
-      stress = r.stress;
-      eq_plastic = r.equivalent_plastic_strain_increment;
+      if (unconverged < 0 || static_cast<long>(i) < unconverged) unconverged = static_cast<long>(i);
+      continue;
     }
+    const Eigen::Matrix3d& stress = r.stress;
+    const double eq_plastic = r.eq_plastic;
     if (!stress.allFinite()) {
 #pragma omp critical
       if (bad < 0 || static_cast<long>(i) < bad) bad = static_cast<long>(i);
@@ -203,13 +190,13 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   };
   if (bad >= 0) diagnose(bad, "soil stress is not finite after the Jaumann update and return mapping");
   if (unconverged >= 0) {
-    const Eigen::Matrix3d s = sv.get(static_cast<std::size_t>(unconverged));
-    diagnose(unconverged, "the Modified Cam Clay return mapping did not converge (start of step p' = " +
-                              std::to_string(soil::ModifiedCamClay::mean_effective_stress(s)) + " Pa, q = " +
-                              std::to_string(soil::ModifiedCamClay::deviator_stress(s)) + " Pa, p_c = " +
-                              std::to_string(pc[unconverged]) + " Pa)");
+    const auto i = static_cast<std::size_t>(unconverged);
+    const SoilMaterial& m = scene_.soils[P.material[i]];
+    diagnose(unconverged, std::visit([&](const auto& model) {
+      return model.describe_failure(sv.get(i), states[P.material[i]], i);
+    }, m.model));
   }
-  if (has_cam_clay_) update_wave_speeds(P);
+  if (has_pressure_dependent_) update_wave_speeds(P);
 }
 
 void SoilForces::prepare_pair_terms(Particles& P) const {
@@ -252,14 +239,14 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
   const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
   const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
-  const double* cw = has_cam_clay_ ? P.field(SoilFields::wave_speed).data() : nullptr;
+  const double* cw = has_pressure_dependent_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
     if (!is_solid(ki)) continue;
     const SoilMaterial& mi = scene_.soils[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
-    const double ci = cw ? cw[i] : mi.wave_speed();
+    const double ci = cw ? cw[i] : wave_speed_[P.material[i]];
     const double alpha = mi.artificial_viscosity, beta = mi.artificial_viscosity_beta;
     const double n_as = mi.artificial_stress_exponent;
     const bool n_is_4 = n_as == 4.0;

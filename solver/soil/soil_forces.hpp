@@ -23,10 +23,10 @@
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "io/scene.hpp"
-#include <optional>
+#include <set>
+#include <string>
 
-#include "soil/drucker_prager.hpp"
-#include "soil/modified_cam_clay.hpp"
+#include "materials/solid_model.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph {
@@ -55,14 +55,15 @@ class SoilForces {
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   void prepare_pair_terms(Particles& P) const;  // S = sigma/rho^2 and artificial stress R per particle
 
-  // Local wave speeds of the Modified Cam Clay particles (field SoilFields::wave_speed) and their maximum.
+  // The models' state fields per material.
+  std::vector<materials::SolidState> bind_states(Particles& P) const;
+  // Local wave speeds of the pressure-dependent (Modified Cam Clay) particles (field SoilFields::wave_speed) and their maximum.
   void update_wave_speeds(Particles& P) const;
 
   const Scene& scene_;
-  std::vector<std::optional<soil::DruckerPrager>> models_;      // drucker_prager and linear_elastic
-  std::vector<std::optional<soil::ModifiedCamClay>> cam_clay_;  // modified_cam_clay
-  std::vector<char> elastic_only_;  // linear_elastic materials: Jaumann rotation + elastic increment only
-  bool has_cam_clay_ = false;
+  std::set<std::string> state_fields_;  // the models' state fields (materials/solid_model.hpp)
+  std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
+  bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
   mutable double max_wave_speed_ = 0;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
 };

@@ -30,13 +30,17 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
   }
   if (s.has_soil()) {
     const auto& m = s.soils.front();
-    rec.options["soil_model"] = m.model;
+    rec.options["soil_model"] = m.model_name();
     rec.options["artificial_viscosity"] = m.artificial_viscosity;
     rec.options["artificial_stress"] = m.artificial_stress;
     if (m.artificial_stress > 0) rec.options["artificial_stress_exponent"] = m.artificial_stress_exponent;
-    rec.options["friction_angle_deg"] = m.friction_angle;
     rec.options["kernel_gradient_correction"] = s.kernel_gradient_correction;
-    rec.options["dilatancy_angle_deg"] = m.dilatancy_angle;
+    std::visit([&](const auto& model) {  // the friction angles of the models that have them
+      if constexpr (requires { model.friction_angle; }) {
+        rec.options["friction_angle_deg"] = model.friction_angle;
+        rec.options["dilatancy_angle_deg"] = model.dilatancy_angle;
+      }
+    }, m.model);
   }
   const long steps0 = sim.steps();
   Progress bar(s.t_end, progress);

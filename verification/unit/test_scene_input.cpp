@@ -197,7 +197,7 @@ json cam_clay_scene() {
 
 TEST(SceneInput, CamClayMaterialRanges) {
   const Scene s = parse_scene(cam_clay_scene(), "ok.json");
-  EXPECT_TRUE(s.soils.front().is_cam_clay());
+  EXPECT_TRUE(s.soils.front().is<materials::ModifiedCamClay>());
   EXPECT_DOUBLE_EQ(s.bodies.front().ocr, 1.0);
   auto j = cam_clay_scene();
   j["materials"]["clay"]["lambda"] = 0.035;

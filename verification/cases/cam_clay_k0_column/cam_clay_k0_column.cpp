@@ -20,7 +20,8 @@ namespace {
 
 Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const Scene scene = cfg.scene(spacing);
-  const SoilMaterial& m = scene.soils.front();
+  const SoilMaterial& soil = scene.soils.front();
+  const auto& m = soil.as<materials::ModifiedCamClay>();
   const BodySpec& body = scene.bodies.front();
   const double H0 = body.hi[1] - body.lo[1], g = -scene.gravity[1];
   const double k0_ref = reference::mcc_k0_normally_consolidated(m.lambda, m.kappa, m.critical_state_slope, m.poisson);
@@ -55,7 +56,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (P.kind[i] != Kind::Soil) continue;
     const double depth = body.hi[1] - y0[static_cast<std::size_t>(P.id[i])];
-    rows.push_back({depth, -syy[i], -sxx[i], m.density * g * depth});
+    rows.push_back({depth, -syy[i], -sxx[i], soil.density * g * depth});
   }
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.depth < b.depth; });
   std::vector<double> sv, sv_ref;
@@ -74,7 +75,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const double k0_sph = k0_n > 0 ? k0_sum / k0_n : NAN;
   rec.series.push_back(s_v);
   rec.series.push_back(s_h);
-  const double sv_base = m.density * g * H0;
+  const double sv_base = soil.density * g * H0;
   rec.series.push_back({"rho g z (equilibrium)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,
                         {0.0, sv_base / 1e3}, {0.0, -H0}});
   rec.series.push_back({"K0_nc rho g z (Modified Cam Clay)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,

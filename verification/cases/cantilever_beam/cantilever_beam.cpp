@@ -29,11 +29,12 @@ struct Beam {
 Beam beam_theory(const Scene& scene) {
   const auto& body = scene.bodies.front();
   const SoilMaterial& m = scene.soils.front();
+  const auto& el = m.as<materials::LinearElastic>().elastic;
   Beam b;
   b.L = body.hi[0] - body.lo[0];
   b.H = body.hi[1] - body.lo[1];
-  b.E_plane = m.young / (1.0 - m.poisson * m.poisson);
-  b.G = m.young / (2.0 * (1.0 + m.poisson));
+  b.E_plane = el.young / (1.0 - el.poisson * el.poisson);
+  b.G = el.young / (2.0 * (1.0 + el.poisson));
   b.q = m.density * -scene.gravity[1] * b.H;
   const double I = b.H * b.H * b.H / 12.0, kappa = 5.0 / 6.0;
   b.delta = b.q * std::pow(b.L, 4) / (8.0 * b.E_plane * I) + b.q * b.L * b.L / (2.0 * kappa * b.G * b.H);

@@ -32,12 +32,13 @@ Record run_variant(const CaseConfig& cfg, const CaseContext& ctx, double spacing
   if (!artificial_stress) scene.soils.front().artificial_stress = 0.0;
   const auto& plate = scene.bodies.front();
   const SoilMaterial& mat = scene.soils.front();
+  const auto& el = mat.as<materials::LinearElastic>().elastic;
   const double L = plate.hi[0] - plate.lo[0], H = plate.hi[1] - plate.lo[1];
   const double k = 1.875 / L;
-  const double K = mat.young / (3.0 * (1.0 - 2.0 * mat.poisson));
+  const double K = el.young / (3.0 * (1.0 - 2.0 * el.poisson));
   const double cs = std::sqrt(K / mat.density);
   const double Vf = cfg.spec.at("velocity_factor");
-  const double omega = std::sqrt(mat.young * H * H * std::pow(k, 4) / (12.0 * mat.density * (1.0 - mat.poisson * mat.poisson)));
+  const double omega = std::sqrt(el.young * H * H * std::pow(k, 4) / (12.0 * mat.density * (1.0 - el.poisson * el.poisson)));
 
   Simulation sim(scene);
   Particles& P = sim.particles();

@@ -33,9 +33,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const SoilMaterial& sand = scene.soils.front();
   const double H0 = soil.hi[1] - soil.lo[1], y0 = soil.lo[1];
   const double gamma0 = sand.density * -scene.gravity[1];
-  const double sphi = std::sin(sand.friction_angle * std::numbers::pi / 180.0);
+  const double sphi = std::sin(sand.as<materials::DruckerPrager>().friction_angle * std::numbers::pi / 180.0);
   const double K_lim = active ? (1 - sphi) / (1 + sphi) : (1 + sphi) / (1 - sphi);
-  const double K0 = sand.poisson / (1 - sand.poisson);
+  const double K0 = sand.poisson_ratio() / (1 - sand.poisson_ratio());
   const double F0 = 0.5 * K0 * gamma0 * H0 * H0, F_lim = 0.5 * K_lim * gamma0 * H0 * H0;
 
   Simulation sim(scene);

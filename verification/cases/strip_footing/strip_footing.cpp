@@ -22,7 +22,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const double dx = scene.dx, B = cfg.spec.at("footing_width");
   const auto& footing = scene.walls.blocks.front();
   const double xc = 0.5 * (footing.lo[0] + footing.hi[0]), y_base0 = footing.lo[1], v = -footing.velocity[1];
-  const double c = scene.soils.front().cohesion;
+  const double c = scene.soils.front().as<materials::DruckerPrager>().cohesion;
   const double q_prandtl = (2.0 + std::numbers::pi) * c;
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);

@@ -183,7 +183,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   rec.extra["max_penetration_m"] = penetration;
   rec.extra["L_over_dx"] = L0 / dx;
   rec.options["interface_friction_angle"] = slab.interface_friction_angle;
-  rec.options["cohesion_pa"] = mat ? mat->cohesion : NAN;
+  rec.options["cohesion_pa"] = mat && mat->is<materials::DruckerPrager>() ? mat->as<materials::DruckerPrager>().cohesion : NAN;
   rec.extra["max_sticking_share_of_normal_force_after_t0"] = stick_max_after_t0;
   if (block) {
     add_case_metric(rec, cfg, "coulomb_displacement_rel_error", err_coulomb / s_end, ok);

@@ -28,7 +28,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   if (!soil) throw std::runtime_error("terzaghi_consolidation: the scene's soil body needs a surcharge");
   const double H = soil->hi[1] - soil->lo[1], top = soil->hi[1], g = -scene.gravity[1];
   const double gamma_w = Seepage(scene).unit_weight();  // defines k (standard gravity when the scene has none)
-  const double E_oed = m.young * (1 - m.poisson) / ((1 + m.poisson) * (1 - 2 * m.poisson));
+  const auto& el = m.as<materials::LinearElastic>().elastic;
+  const double E_oed = el.young * (1 - el.poisson) / ((1 + el.poisson) * (1 - 2 * el.poisson));
   const double K_w = w.density * w.sound_speed * w.sound_speed;  // Tait: dp/drho at rho0 times rho0
   const reference::TerzaghiSpec ref = reference::terzaghi_spec(H, m.hydraulic_conductivity, gamma_w, E_oed,
                                                                m.porosity, K_w, soil->surcharge.pressure,

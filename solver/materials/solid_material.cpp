@@ -1,0 +1,57 @@
+#include "materials/solid_material.hpp"
+
+#include "io/json_fields.hpp"
+#include "materials/model_list.hpp"
+
+namespace geosph {
+
+using Solids = materials::ModelList<materials::SolidModel>;
+
+std::vector<std::string> solid_model_names() { return Solids::names(); }
+
+std::string SoilMaterial::model_name() const {
+  return std::visit([](const auto& m) { return std::string(m.name); }, model);
+}
+double SoilMaterial::poisson_ratio() const {
+  return std::visit([](const auto& m) { return m.poisson_ratio(); }, model);
+}
+bool SoilMaterial::pressure_dependent() const {
+  return std::visit([](const auto& m) { return m.pressure_dependent; }, model);
+}
+double SoilMaterial::wave_speed() const {
+  return std::visit([&](const auto& m) { return m.wave_speed(0.0, density); }, model);
+}
+void SoilMaterial::throw_wrong_model(const std::string& wanted) const {
+  throw InputError("material \"" + name + "\" is " + model_name() + ", expected " + wanted);
+}
+
+SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, const std::string& model) {
+  SoilMaterial m;
+  m.name = name;
+  m.density = f.number("density", Range::positive());
+  m.model = Solids::parse(model, f);
+  if (std::visit([](const auto& s) { return s.saturable; }, m.model)) {  // a two-phase skeleton
+    m.porosity = f.number("porosity", Range::open(0, 1), 0.0);
+    if (f.has("hydraulic_conductivity") || f.has("grain_size")) {
+      if (!m.saturated()) f.fail("porosity", "is required with hydraulic_conductivity or grain_size (saturated soil)");
+      if (f.has("hydraulic_conductivity") && f.has("grain_size"))
+        f.fail("grain_size", "give either hydraulic_conductivity or grain_size, not both");
+      if (f.has("hydraulic_conductivity")) m.hydraulic_conductivity = f.number("hydraulic_conductivity", Range::positive());
+      else m.grain_size = f.number("grain_size", Range::positive());
+    } else if (m.saturated()) {
+      f.fail("hydraulic_conductivity", "is missing: saturated soil (porosity given) needs hydraulic_conductivity [m/s] > 0 "
+                                       "or grain_size [m] > 0 (Kozeny-Carman)");
+    }
+  }
+  m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
+  m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
+  if (auto a = f.optional_object("artificial_stress")) {
+    m.artificial_stress = a->number("epsilon", Range::between(0, 1));
+    m.artificial_stress_exponent = a->number("exponent", Range::between(1, 10), 4.0);
+    a->reject_unknown();
+  }
+  f.reject_unknown();
+  return m;
+}
+
+}  // namespace geosph

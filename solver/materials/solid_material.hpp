@@ -1,0 +1,52 @@
+// An SPH solid material: soil or a structure, one constitutive model from materials/solid_models.hpp
+// plus what every solid has: density, the saturated-soil data of a two-phase skeleton and the
+// stabilisation (artificial viscosity and stress). Angles in degrees as written in the scene; the
+// stress is integrated with the Jaumann rate and its pressure comes from the constitutive model (no
+// equation of state).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "materials/solid_models.hpp"
+
+namespace geosph {
+
+class JsonFields;
+
+struct SoilMaterial {
+  std::string name;
+  materials::SolidModel model;
+  double density = 0;                 // [kg/m^3]
+  // Saturated soil (two-phase, coupling/seepage.hpp): the skeleton's initial porosity n0 in (0, 1);
+  // `density` is then the dry (partial) density (1 - n0) rho_s of the skeleton. The hydraulic
+  // conductivity follows Kozeny-Carman, from its value at n0 or from the grain size.
+  double porosity = 0;                // n0; 0 = dry soil (no pore water)
+  double hydraulic_conductivity = 0;  // k at n0 [m/s] (0: from grain_size)
+  double grain_size = 0;              // d [m], Kozeny-Carman with the 180 constant (0: from hydraulic_conductivity)
+  bool saturated() const { return porosity > 0; }
+  double grain_density() const { return density / (1.0 - porosity); }  // rho_s
+  double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
+  double artificial_viscosity_beta = 0.0;
+  double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
+  double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
+
+  std::string model_name() const;
+  double poisson_ratio() const;
+  bool pressure_dependent() const;  // wave speed changes with p' (per-particle speeds)
+  // P-wave speed at zero mean stress for pressure-dependent models; the constant one otherwise.
+  double wave_speed() const;
+  template <class M> bool is() const { return std::holds_alternative<M>(model); }
+  // The model as M; throws InputError naming the material if it is another model.
+  template <class M> const M& as() const {
+    if (const M* m = std::get_if<M>(&model)) return *m;
+    throw_wrong_model(std::string(M::name));
+  }
+
+  [[noreturn]] void throw_wrong_model(const std::string& wanted) const;
+};
+
+// Reads materials.<name> of a solid model (the "model" field already checked against solid_model_names()).
+SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, const std::string& model);
+std::vector<std::string> solid_model_names();
+
+}  // namespace geosph
