@@ -33,8 +33,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Principal stresses sigma_1 >= sigma_2 >= sigma_3 and their eigenvectors (columns, same order).
 // compute() (tridiagonalisation + implicit QR) rather than computeDirect(): the closed-form 3x3
-// solver loses accuracy in the eigenvectors of (nearly) repeated eigenvalues, which the edge and
-// apex states are.
+// solver loses accuracy in the eigenvectors of (nearly) repeated eigenvalues, which the edge states
+// are (measured on random rotations of diag(-1e5, -1e5 (1 + gap), -2.3e5): V L V^T - sigma and
+// V^T V - I reach 5e-9 / 1e-8 relative for gap <= 1e-8 with computeDirect, 2e-15 with compute()).
 struct Principal {
   Vec3 values;
   Matrix3d vectors;
