@@ -5,8 +5,9 @@
 //
 // Source: de Souza Neto, Peric & Owen (2008), "Computational Methods for Plasticity", Wiley,
 // Sec. 8.2 (cited as dSN), return mapping in principal stresses, Boxes 8.4–8.5, here with no
-// hardening (c constant). dSN write the model tension positive too, so their formulas are used
-// with their signs. Principal stresses are ordered sigma_1 >= sigma_2 >= sigma_3; s_phi = sin(phi),
+// hardening (c constant). dSN write the model tension positive too, so no sign change is needed;
+// the coefficients a, b below were re-derived here as N_phi.D.N_psi of the planes involved (with
+// D N = (K - 2G/3) tr(N) 1 + 2 G N), which reproduces dSN's expressions. Principal stresses are ordered sigma_1 >= sigma_2 >= sigma_3; s_phi = sin(phi),
 // c_phi = cos(phi), s_psi = sin(psi).
 //
 //   main plane      Phi_a = (sigma_1 - sigma_3) + (sigma_1 + sigma_3) s_phi - 2 c c_phi
@@ -31,10 +32,16 @@
 //         b = 2G (1 - s_phi - s_psi - s_phi s_psi / 3) + 4K s_phi s_psi;
 //       the 2x2 system [a b; b a] (dgamma_a, dgamma_b) = (Phi_a^tr, Phi_b^tr) has the closed form
 //         dgamma_a = (a Phi_a - b Phi_b)/(a^2 - b^2),  dgamma_b = (a Phi_b - b Phi_a)/(a^2 - b^2),
-//       (a - b = 2G (1 -+ s_phi)(1 -+ s_psi) > 0), sigma = sigma^tr - dgamma_a D N_a - dgamma_b D N_b.
-//       Valid if sigma_1 >= sigma_3 (the edge point is on the pyramid side of the apex).
-//   (d) otherwise the apex (phi > 0 only): sigma = c cot(phi) I, the model's tension cut-off; the
-//       plastic volume change is (p^tr - c cot phi)/K. With phi = 0 (Tresca, psi = 0) there is no
+//       (a - b = 2G (1 - s_phi)(1 - s_psi) right, 2G (1 + s_phi)(1 + s_psi) left: > 0),
+//       sigma = sigma^tr - dgamma_a D N_a - dgamma_b D N_b.
+//       Valid if sigma_1 >= sigma_3 (the edge point is on the pyramid side of the apex); the unit
+//       tests check that dgamma_a, dgamma_b >= 0 then, and (associated flow) the closest-point
+//       variational inequality, i.e. that this selection picks the right region.
+//   (d) otherwise the apex (phi > 0 only): sigma = c cot(phi) I (set exactly), the model's tension
+//       cut-off; the plastic volume change is eps_v^p = (p^tr - c cot phi)/K, p = tr(sigma)/3. For
+//       psi > 0 the plastic strain is then a non-negative combination of the six planes' N_psi
+//       (checked in the unit tests); for psi = 0 its volume change is the crack opening of the
+//       cut-off, which the flow rule alone could not give. With phi = 0 (Tresca, psi = 0) there is no
 //       apex: the returns are purely deviatoric and the edge return is always valid.
 //   The stress tensor is rebuilt with the trial's eigenvectors, so the return is coaxial.
 //
@@ -42,7 +49,7 @@
 //   a plane/edge it is sum dgamma_i N_i in the principal frame, trace 2 s_psi (dgamma_a + dgamma_b).
 //   equivalent_plastic_strain_increment = sqrt(2/3 dev(de_p):dev(de_p)), as in DruckerPrager.
 //   At the apex the multipliers of the six planes are not unique: plastic_multiplier is then
-//   dev_p / (2 s_psi) (the total that the flow rule needs for the volume change) for psi > 0 and
+//   eps_v^p / (2 s_psi) (the total that the flow rule needs for the volume change) for psi > 0 and
 //   (sigma_1^tr - sigma_3^tr)/(4G) (the main-plane multiplier of the deviatoric part) for psi = 0.
 //
 // update() does (a) the Jaumann rotation of DruckerPrager::update (DruckerPrager::jaumann_rotate),
