@@ -8,6 +8,7 @@
 #include "materials/drucker_prager.hpp"
 #include "materials/linear_elastic.hpp"
 #include "materials/modified_cam_clay.hpp"
+#include "materials/mohr_coulomb.hpp"
 #include "materials/von_mises.hpp"
 
 namespace geosph::materials {
@@ -16,6 +17,7 @@ using SolidModel = std::variant<
     DruckerPrager,
     ModifiedCamClay,
     LinearElastic,
-    VonMises>;
+    VonMises,
+    MohrCoulomb>;
 
 }  // namespace geosph::materials

@@ -1,5 +1,5 @@
-// Strip footing on weightless undrained clay (Drucker-Prager with phi = 0, i.e. von Mises matched
-// to Tresca in plane strain, sqrt(J2) = c): a rigid block of width B is pushed into the soil at a
+// Strip footing on weightless undrained clay, phi = 0: Drucker-Prager (von Mises matched to Tresca in
+// plane strain, sqrt(J2) = c) or Mohr-Coulomb (Tresca itself; case strip_footing_mohr_coulomb): a rigid block of width B is pushed into the soil at a
 // constant slow speed; the bearing pressure q (mean -sigma_yy of the soil rows within 2 dx below
 // the base, |x - x_c| < B/2) rises to a limit that Prandtl's mechanism gives as (2 + pi) c.
 #include "cases/strip_footing/strip_footing.hpp"
@@ -22,7 +22,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const double dx = scene.dx, B = cfg.spec.at("footing_width");
   const auto& footing = scene.walls.blocks.front();
   const double xc = 0.5 * (footing.lo[0] + footing.hi[0]), y_base0 = footing.lo[1], v = -footing.velocity[1];
-  const double c = scene.soils.front().as<materials::DruckerPrager>().cohesion;
+  const double c = std::visit([&](const auto& model) -> double {  // Drucker-Prager or Mohr-Coulomb with phi = 0
+    if constexpr (requires { model.cohesion; }) return model.cohesion;
+    else scene.soils.front().throw_wrong_model("drucker_prager or mohr_coulomb");
+  }, scene.soils.front().model);
   const double q_prandtl = (2.0 + std::numbers::pi) * c;
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
