@@ -1,8 +1,10 @@
 #include "harness/catalogue.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "harness/driver_registry.hpp"
+#include "harness/tolerance_check.hpp"
 #include "io/json_fields.hpp"
 
 namespace geosph::verify {
@@ -48,7 +50,11 @@ std::vector<CaseEntry> discover_cases(const std::filesystem::path& data_dir) {
 }
 
 std::vector<Record> run_case(const CaseEntry& entry, const CaseContext& ctx) {
-  return drivers().at(entry.driver)(ctx, entry.name);
+  std::vector<Record> records = drivers().at(entry.driver)(ctx, entry.name);
+  for (const auto& name : flag_unreported_tolerances(load_case(ctx, entry.name), ctx, records))
+    std::fprintf(stderr, "%s: case.json names tolerance '%s' but the case reported no such metric (failed)\n",
+                 entry.name.c_str(), name.c_str());
+  return records;
 }
 
 }  // namespace geosph::verify

@@ -25,7 +25,8 @@ struct CaseEntry {
 // the known ones) or "labels" is not an array of strings.
 std::vector<CaseEntry> discover_cases(const std::filesystem::path& data_dir);
 
-// Runs the case's driver at ctx.level.
+// Runs the case's driver at ctx.level, then fails every tolerance of its case.json that none of
+// its records reports (harness/tolerance_check.hpp).
 std::vector<Record> run_case(const CaseEntry& entry, const CaseContext& ctx);
 
 }  // namespace geosph::verify

@@ -1,12 +1,15 @@
-// The discovered catalogue: case folders and their drivers (self-registered). No simulation runs here.
+// The discovered catalogue: case folders, their drivers (self-registered) and the check that every
+// tolerance a case.json names is reported by the case. No simulation runs here.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
 #include "harness/catalogue.hpp"
 #include "harness/driver_registry.hpp"
+#include "harness/tolerance_check.hpp"
 #include "io/json_fields.hpp"
 
 using namespace geosph;
@@ -84,4 +87,41 @@ TEST(Catalogue, MissingOrUnknownDriverIsAnInputError) {
 
   const auto labels = thrown_by(synthetic_catalogue("no_labels", {{"z", R"({"driver": "hydrostatic_tank", "levels": {}})"}}));
   EXPECT_NE(labels.find("field 'labels'"), std::string::npos) << labels;
+}
+
+// A tiny synthetic case: tolerances a and b, records reporting a only (b a misspelt or renamed metric).
+TEST(ToleranceCheck, AToleranceNoMetricReportsFailsTheCase) {
+  CaseConfig cfg;
+  cfg.name = "synthetic";
+  cfg.tolerances = {{"a", {0.1, "why a"}}, {"b", {0.2, "why b"}}};
+  CaseContext ctx;
+  Record study, scored;
+  study.scored = false;
+  study.add_metric("b_study", 0.0, 1.0, "");
+  scored.add_metric("a", 0.05, 0.1, "why a");
+  std::vector<Record> records = {study, scored};
+  ASSERT_TRUE(records[1].passed());
+
+  EXPECT_EQ(flag_unreported_tolerances(cfg, ctx, records), std::vector<std::string>{"b"});
+  ASSERT_EQ(records.size(), 2u);
+  const auto& m = records[1].metrics.back();
+  EXPECT_EQ(m.name, "b");
+  EXPECT_TRUE(std::isnan(m.value));
+  EXPECT_FALSE(m.passed);
+  EXPECT_NE(m.why_tolerance.find("reported no such metric"), std::string::npos);
+  EXPECT_FALSE(records[1].passed());
+  EXPECT_EQ(records[0].metrics.size(), 1u);  // the unscored study is left as it was
+
+  // every tolerance reported (here b by an unscored record): nothing added
+  records[0].add_metric("b", 0.0, 0.2, "why b");
+  const auto before = records[1].metrics.size();
+  EXPECT_TRUE(flag_unreported_tolerances(cfg, ctx, records).empty());
+  EXPECT_EQ(records[1].metrics.size(), before);
+
+  // no scored record (or none at all): a new failing record carries the missing metric
+  std::vector<Record> none;
+  EXPECT_EQ(flag_unreported_tolerances(cfg, ctx, none).size(), 2u);
+  ASSERT_EQ(none.size(), 1u);
+  EXPECT_EQ(none[0].case_name, "synthetic");
+  EXPECT_FALSE(none[0].passed());
 }
