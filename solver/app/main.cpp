@@ -1,10 +1,11 @@
 // The `geosph` command:
 //   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output
 //   geosph verify [--case NAME] [--level quick|full] --out DIR   run catalogue cases, write result records
-//   geosph info                          version, threads, catalogue
+//   geosph info                          version, threads, catalogue (the case folders found)
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -73,30 +74,31 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
   ctx.level = level;
   ctx.threads = omp_get_max_threads();
   ctx.progress = progress;
+  // the catalogue: the case folders under the data dir (verification/cases/*/case.json)
+  const auto catalogue = verify::discover_cases(ctx.data_dir);
+  for (const auto& n : names) {
+    if (std::none_of(catalogue.begin(), catalogue.end(), [&](const auto& c) { return c.name == n; })) {
+      std::string all;
+      for (const auto& c : catalogue) all += " " + c.name;
+      throw InputError("--case: unknown case '" + n + "' (catalogue in " + (ctx.data_dir / "verification" / "cases").string() +
+                       ":" + all + ")");
+    }
+  }
   std::vector<const verify::CaseEntry*> todo;
-  for (const auto& c : verify::catalogue()) {
+  for (const auto& c : catalogue) {
     if (!names.empty() && std::find(names.begin(), names.end(), c.name) == names.end()) continue;
     // without --case, a level that only some cases define (convergence) runs those cases
-    if (names.empty() && !verify::case_has_level(ctx, c.name, level)) {
+    if (names.empty() && !c.has_level(level)) {
       std::fprintf(stderr, "(%s has no '%s' level, skipped)\n", c.name.c_str(), level.c_str());
       continue;
     }
     todo.push_back(&c);
   }
-  for (const auto& n : names) {
-    bool known = false;
-    for (const auto& c : verify::catalogue()) known = known || c.name == n;
-    if (!known) {
-      std::string all;
-      for (const auto& c : verify::catalogue()) all += " " + c.name;
-      throw InputError("--case: unknown case '" + n + "' (catalogue:" + all + ")");
-    }
-  }
   fs::create_directories(out_dir);
   int failed = 0, passed = 0, studies = 0;
   for (const auto* c : todo) {
     std::fprintf(stderr, "== %s (%s)\n", c->name.c_str(), level.c_str());
-    const auto records = c->run(ctx);
+    const auto records = verify::run_case(*c, ctx);
     for (std::size_t k = 0; k < records.size(); ++k) {
       const auto& r = records[k];
       std::string file = c->name + "__" + level + (records.size() > 1 ? "__" + std::to_string(k) : "") + ".json";
@@ -151,7 +153,8 @@ int main(int argc, char** argv) {
     if (*info) {
       std::printf("GeoSPH 0.1.0\nOpenMP threads: %d\ndata dir: %s\ncatalogue:\n", omp_get_max_threads(),
                   verify::default_data_dir().c_str());
-      for (const auto& c : verify::catalogue()) std::printf("  %s\n", c.name.c_str());
+      for (const auto& c : verify::discover_cases(verify::default_data_dir()))
+        std::printf("  %-28s driver %s\n", c.name.c_str(), c.driver.c_str());
       return 0;
     }
   } catch (const InputError& e) {

@@ -7,8 +7,7 @@
 
 namespace geosph::verify {
 
-namespace {
-nlohmann::json read_json(const std::filesystem::path& p) {
+nlohmann::json read_json_file(const std::filesystem::path& p) {
   std::ifstream in(p);
   if (!in) throw InputError(p.string() + ": cannot open");
   try {
@@ -17,7 +16,6 @@ nlohmann::json read_json(const std::filesystem::path& p) {
     throw InputError(p.string() + ": not valid JSON: " + e.what());
   }
 }
-}  // namespace
 
 std::filesystem::path default_data_dir() {
   if (const char* env = std::getenv("GEOSPH_DATA_DIR")) return env;
@@ -29,7 +27,7 @@ CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
   c.name = name;
   c.dir = ctx.data_dir / "verification" / "cases" / name;
   const auto file = (c.dir / "case.json").string();
-  const nlohmann::json j = read_json(file);
+  const nlohmann::json j = read_json_file(file);
   JsonFields f(j, file, "");
   c.title = f.text("title");
   auto ref = f.object("reference");
@@ -48,7 +46,7 @@ CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
   }
   c.spec = j;
   // element (material-point) tests have no scene
-  if (std::filesystem::exists(c.dir / "scene.json")) c.scene_json = read_json(c.dir / "scene.json");
+  if (std::filesystem::exists(c.dir / "scene.json")) c.scene_json = read_json_file(c.dir / "scene.json");
   return c;
 }
 
@@ -76,13 +74,6 @@ std::vector<double> CaseConfig::level_numbers(const std::string& key) const {
     if (!v.empty()) return v;
   }
   return {level_number(key)};
-}
-
-bool case_has_level(const CaseContext& ctx, const std::string& name, const std::string& level) {
-  std::ifstream in(ctx.data_dir / "verification" / "cases" / name / "case.json");
-  if (!in) return false;
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  return j.is_object() && j.contains("levels") && j["levels"].contains(level);
 }
 
 Scene CaseConfig::scene(double dx) const {

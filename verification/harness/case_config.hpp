@@ -42,9 +42,8 @@ struct CaseConfig {
 };
 
 CaseConfig load_case(const CaseContext& ctx, const std::string& name);
-// Whether verification/cases/<name>/case.json defines the level (e.g. only some cases have a
-// "convergence" level).
-bool case_has_level(const CaseContext& ctx, const std::string& name, const std::string& level);
+// A JSON file (comments allowed); InputError naming the file if it cannot be read or parsed.
+nlohmann::json read_json_file(const std::filesystem::path& p);
 std::filesystem::path default_data_dir();
 
 }  // namespace geosph::verify

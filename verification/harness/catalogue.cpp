@@ -1,62 +1,60 @@
 #include "harness/catalogue.hpp"
 
-#include <limits>
+#include <algorithm>
+#include <cstdio>
 
-#include "cases/cam_clay_k0_column/cam_clay_k0_column.hpp"
-#include "cases/cantilever_beam/cantilever_beam.hpp"
-#include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
-#include "cases/dam_break_2d/dam_break_2d.hpp"
-#include "cases/darcy_seepage/darcy_seepage.hpp"
-#include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
-#include "cases/granular_collapse_scaling/granular_collapse_scaling.hpp"
-#include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
-#include "cases/oscillating_plate/oscillating_plate.hpp"
-#include "cases/poiseuille_flow/poiseuille_flow.hpp"
-#include "cases/quicksand/quicksand.hpp"
-#include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
-#include "cases/soil_under_free_water/soil_under_free_water.hpp"
-#include "cases/strip_footing/strip_footing.hpp"
-#include "cases/structure_sliding/structure_sliding.hpp"
-#include "cases/terzaghi_consolidation/terzaghi_consolidation.hpp"
+#include "harness/driver_registry.hpp"
+#include "harness/tolerance_check.hpp"
+#include "io/json_fields.hpp"
 
 namespace geosph::verify {
 
-const std::vector<CaseEntry>& catalogue() {
-  static const std::vector<CaseEntry> cases = {
-      {"hydrostatic_tank", run_hydrostatic_tank},
-      {"poiseuille_flow", run_poiseuille_flow},
-      {"dam_break_2d", run_dam_break_2d},
-      {"granular_collapse_bui", run_granular_collapse_bui},
-      {"granular_collapse_cam_clay", run_granular_collapse_cam_clay},
-      {"granular_collapse_scaling", run_granular_collapse_scaling},
-      {"oscillating_plate", run_oscillating_plate},
-      {"strip_footing", run_strip_footing},
-      {"cam_clay_triaxial", run_cam_clay_triaxial},
-      {"cam_clay_k0_column", run_cam_clay_k0_column},
-      {"cantilever_beam", run_cantilever_beam},
-      {"rankine_active", run_rankine_active},
-      {"rankine_passive", run_rankine_passive},
-      {"structure_sliding", run_structure_sliding},
-      {"terzaghi_consolidation", run_terzaghi_consolidation},
-      {"darcy_seepage", run_darcy_seepage},
-      {"soil_under_free_water", run_soil_under_free_water},
-      {"quicksand", run_quicksand},
-  };
+bool CaseEntry::has_level(const std::string& level) const {
+  return std::find(levels.begin(), levels.end(), level) != levels.end();
+}
+
+namespace {
+CaseEntry read_entry(const std::filesystem::path& file) {
+  const nlohmann::json j = read_json_file(file);
+  JsonFields f(j, file.string(), "");
+  CaseEntry c;
+  c.name = file.parent_path().filename().string();
+  c.driver = f.text("driver");
+  if (!drivers().count(c.driver)) {
+    std::string known;
+    for (const auto& [name, fn] : drivers()) known += (known.empty() ? "" : ", ") + name;
+    f.fail("driver", "unknown driver '" + c.driver + "' (known: " + known + ")");
+  }
+  c.levels = f.object("levels").keys();
+  if (!j.contains("labels")) f.fail("labels", "is missing (required; ctest labels, e.g. [\"verification\"])");
+  if (!j["labels"].is_array()) f.fail("labels", "must be an array of strings");
+  for (const auto& l : j["labels"]) {
+    if (!l.is_string()) f.fail("labels", "must be an array of strings");
+    c.labels.push_back(l.get<std::string>());
+  }
+  return c;
+}
+}  // namespace
+
+std::vector<CaseEntry> discover_cases(const std::filesystem::path& data_dir) {
+  const auto root = data_dir / "verification" / "cases";
+  if (!std::filesystem::is_directory(root))
+    throw InputError(root.string() + ": no catalogue here (set GEOSPH_DATA_DIR to the folder holding verification/)");
+  std::vector<CaseEntry> cases;
+  // a folder without case.json (e.g. rankine_earth_pressure) holds only a shared driver's code
+  for (const auto& d : std::filesystem::directory_iterator(root))
+    if (d.is_directory() && std::filesystem::exists(d.path() / "case.json"))
+      cases.push_back(read_entry(d.path() / "case.json"));
+  std::sort(cases.begin(), cases.end(), [](const CaseEntry& a, const CaseEntry& b) { return a.name < b.name; });
   return cases;
 }
 
-Record start_record(const CaseConfig& cfg, const CaseContext& ctx) {
-  Record r;
-  r.case_name = cfg.name;
-  r.title = cfg.title;
-  r.level = ctx.level;
-  r.reference = cfg.reference;
-  return r;
-}
-
-void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name, double value, bool ok) {
-  const auto& tol = cfg.tolerance(name);
-  rec.add_metric(name, ok ? value : std::numeric_limits<double>::quiet_NaN(), tol.value, tol.why);
+std::vector<Record> run_case(const CaseEntry& entry, const CaseContext& ctx) {
+  std::vector<Record> records = drivers().at(entry.driver)(ctx, entry.name);
+  for (const auto& name : flag_unreported_tolerances(load_case(ctx, entry.name), ctx, records))
+    std::fprintf(stderr, "%s: case.json names tolerance '%s' but the case reported no such metric (failed)\n",
+                 entry.name.c_str(), name.c_str());
+  return records;
 }
 
 }  // namespace geosph::verify

@@ -1,6 +1,9 @@
-// The catalogue: every verification case by name.
+// The catalogue: one case per folder verification/cases/<name>/ that holds a case.json, found at
+// run time under the data dir (no list to keep). Its case.json names the registered driver that
+// runs it ("driver", harness/driver_registry.hpp) and its ctest labels ("labels", read by
+// verification/CMakeLists.txt too).
 #pragma once
-#include <functional>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -10,16 +13,20 @@
 namespace geosph::verify {
 
 struct CaseEntry {
-  std::string name;
-  // A case may write several records (e.g. one per resolution).
-  std::function<std::vector<Record>(const CaseContext&)> run;
+  std::string name;    // the folder's name
+  std::string driver;  // case.json "driver"
+  std::vector<std::string> levels;  // the keys of case.json "levels"
+  std::vector<std::string> labels;  // case.json "labels"
+  bool has_level(const std::string& level) const;
 };
 
-const std::vector<CaseEntry>& catalogue();
+// The cases under data_dir/verification/cases, sorted by name. Throws InputError naming the
+// case.json and field when "driver" is missing or names no registered driver (the message lists
+// the known ones) or "labels" is not an array of strings.
+std::vector<CaseEntry> discover_cases(const std::filesystem::path& data_dir);
 
-// Fills the fields every record of a case shares (name, title, level, reference).
-Record start_record(const CaseConfig& cfg, const CaseContext& ctx);
-// Adds metric `name` with the tolerance and reason from case.json; NaN (failing) unless `ok`.
-void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name, double value, bool ok = true);
+// Runs the case's driver at ctx.level, then fails every tolerance of its case.json that none of
+// its records reports (harness/tolerance_check.hpp).
+std::vector<Record> run_case(const CaseEntry& entry, const CaseContext& ctx);
 
 }  // namespace geosph::verify

@@ -3,13 +3,13 @@
 // ramped slowly to g. At the end the vertical stress must carry the weight above each particle, and
 // the horizontal-to-vertical ratio must be the model's K0 of normal compression
 // (reference/analytical/cam_clay_triaxial.hpp).
-#include "cases/cam_clay_k0_column/cam_clay_k0_column.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "analytical/cam_clay_triaxial.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -92,6 +92,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_cam_clay_k0_column(const CaseContext& ctx) { return run_each_spacing(ctx, "cam_clay_k0_column", run_at); }
+std::vector<Record> run_cam_clay_k0_column(const CaseContext& ctx, const std::string& case_name) { return run_each_spacing(ctx, case_name, run_at); }
+
+GEOSPH_CASE_DRIVER(cam_clay_k0_column, run_cam_clay_k0_column);
 
 }  // namespace geosph::verify

@@ -1,14 +1,14 @@
 // Modified Cam Clay element tests (the solver's point model, soil/modified_cam_clay.*) in drained
 // and undrained triaxial compression against the model's closed-form and quadrature solutions
 // (reference/analytical/cam_clay_triaxial.*): one record per test and over-consolidation ratio.
-#include "cases/cam_clay_triaxial/cam_clay_triaxial.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "analytical/cam_clay_triaxial.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/element_test.hpp"
 #include "harness/metrics.hpp"
 
@@ -131,8 +131,8 @@ Record undrained(const CaseConfig& cfg, const CaseContext& ctx, const Setup& s, 
 
 }  // namespace
 
-std::vector<Record> run_cam_clay_triaxial(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "cam_clay_triaxial");
+std::vector<Record> run_cam_clay_triaxial(const CaseContext& ctx, const std::string& case_name) {
+  const CaseConfig cfg = load_case(ctx, case_name);
   const Setup s = setup_of(cfg);
   std::vector<Record> out;
   for (double d : cfg.level_numbers("strain_increment")) {
@@ -141,5 +141,7 @@ std::vector<Record> run_cam_clay_triaxial(const CaseContext& ctx) {
   }
   return out;
 }
+
+GEOSPH_CASE_DRIVER(cam_clay_triaxial, run_cam_clay_triaxial);
 
 }  // namespace geosph::verify

@@ -7,13 +7,13 @@
 // It checks the structure solid alone (no soil). As for oscillating_plate, the single-resolution
 // error is first order in dx, so the scored metric is the Richardson-extrapolated deflection, with the
 // order observed from three spacings (H/dx = 5, 10, 20 at the quick level).
-#include "cases/cantilever_beam/cantilever_beam.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -90,8 +90,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 // Every spacing of the level (coarse to fine); the scored metric, on the finest record, is the
 // Richardson-extrapolated deflection; the coarser records are steps of it (unscored).
-std::vector<Record> run_cantilever_beam(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "cantilever_beam");
+std::vector<Record> run_cantilever_beam(const CaseContext& ctx, const std::string& case_name) {
+  const CaseConfig cfg = load_case(ctx, case_name);
   std::vector<Record> out;
   std::vector<double> spacings, deflections;
   for (double dx : cfg.level_numbers("dx")) {
@@ -113,5 +113,7 @@ std::vector<Record> run_cantilever_beam(const CaseContext& ctx) {
   add_case_metric(fine, cfg, "extrapolated_deflection_rel_error", std::abs(ex.value - theory) / theory, all_stable);
   return out;
 }
+
+GEOSPH_CASE_DRIVER(cantilever_beam, run_cantilever_beam);
 
 }  // namespace geosph::verify

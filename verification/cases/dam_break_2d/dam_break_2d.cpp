@@ -2,14 +2,14 @@
 // surge-front position Z = x/a against T = t sqrt(2g/a) is compared with the experiments of
 // Martin & Moyce (1952) and Koshizuka & Oka (1996) up to the impact on the far wall; the scored
 // metric is the surge-front speed (see below), the Z(T) errors and release lag are recorded.
-#include "cases/dam_break_2d/dam_break_2d.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include <gsl/gsl_fit.h>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -108,6 +108,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 }
 }  // namespace
 
-std::vector<Record> run_dam_break_2d(const CaseContext& ctx) { return run_each_spacing(ctx, "dam_break_2d", run_at); }
+std::vector<Record> run_dam_break_2d(const CaseContext& ctx, const std::string& case_name) { return run_each_spacing(ctx, case_name, run_at); }
+
+GEOSPH_CASE_DRIVER(dam_break_2d, run_dam_break_2d);
 
 }  // namespace geosph::verify

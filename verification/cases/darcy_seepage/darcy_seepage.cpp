@@ -4,13 +4,13 @@
 // Variants (case.json "variants"): a uniform soil at several permeabilities, q = k i; two layers in series
 // with a permeability contrast, q = i L / (L1/k1 + L2/k2) (the harmonic mean), with the piecewise-linear
 // pore pressure between them.
-#include "cases/darcy_seepage/darcy_seepage.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "coupling/seepage.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -111,6 +111,8 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 
 }  // namespace
 
-std::vector<Record> run_darcy_seepage(const CaseContext& ctx) { return run_each_variant(ctx, "darcy_seepage", run_variant); }
+std::vector<Record> run_darcy_seepage(const CaseContext& ctx, const std::string& case_name) { return run_each_variant(ctx, case_name, run_variant); }
+
+GEOSPH_CASE_DRIVER(darcy_seepage, run_darcy_seepage);
 
 }  // namespace geosph::verify

@@ -2,7 +2,6 @@
 // column of cohesionless Drucker-Prager material released from rest against the back wall. At the
 // end the free-surface profile, the run-out and the failure line (boundary of the static wedge, in
 // the initial configuration) are compared with the experiment.
-#include "cases/granular_collapse_bui/granular_collapse_bui.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -11,7 +10,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/deposit.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
@@ -154,11 +154,11 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 }
 }  // namespace
 
-std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx) { return run_each_spacing(ctx, "granular_collapse_bui", run_at); }
-
-// The same experiment with the Modified Cam Clay column (verification/cases/granular_collapse_cam_clay).
-std::vector<Record> run_granular_collapse_cam_clay(const CaseContext& ctx) {
-  return run_each_spacing(ctx, "granular_collapse_cam_clay", run_at);
+// Also the driver of granular_collapse_cam_clay (the same experiment with the Modified Cam Clay column).
+std::vector<Record> run_granular_collapse_bui(const CaseContext& ctx, const std::string& case_name) {
+  return run_each_spacing(ctx, case_name, run_at);
 }
+
+GEOSPH_CASE_DRIVER(granular_collapse_bui, run_granular_collapse_bui);
 
 }  // namespace geosph::verify

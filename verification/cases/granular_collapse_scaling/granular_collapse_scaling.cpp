@@ -5,7 +5,6 @@
 // Drucker-Prager column of soil/, released against the back wall, run until it has stopped); the
 // exponents of the two regimes, fitted in log-log by least squares (GSL), are scored; the
 // prefactors, which depend on the material, are recorded per a as unscored studies.
-#include "cases/granular_collapse_scaling/granular_collapse_scaling.hpp"
 
 #include <gsl/gsl_fit.h>
 
@@ -15,7 +14,8 @@
 #include <fstream>
 #include <limits>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/deposit.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -217,8 +217,8 @@ std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, co
 }
 }  // namespace
 
-std::vector<Record> run_granular_collapse_scaling(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "granular_collapse_scaling");
+std::vector<Record> run_granular_collapse_scaling(const CaseContext& ctx, const std::string& case_name) {
+  const CaseConfig cfg = load_case(ctx, case_name);
   std::ifstream lf(cfg.reference_file(ctx, cfg.spec.at("laws")));
   const nlohmann::json laws = nlohmann::json::parse(lf);
   std::vector<Record> out;
@@ -228,5 +228,7 @@ std::vector<Record> run_granular_collapse_scaling(const CaseContext& ctx) {
   }
   return out;
 }
+
+GEOSPH_CASE_DRIVER(granular_collapse_scaling, run_granular_collapse_scaling);
 
 }  // namespace geosph::verify

@@ -4,14 +4,14 @@
 // computed independently (reference/analytical/hydrostatic_tait.hpp), and no particle may leave.
 // (Started at rest at uniform density instead, the column is still settling after 2 s with this
 // artificial viscosity; see the closing note of issue 2.)
-#include "cases/hydrostatic_tank/hydrostatic_tank.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "analytical/hydrostatic_tait.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -88,6 +88,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 }
 }  // namespace
 
-std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx) { return run_each_spacing(ctx, "hydrostatic_tank", run_at); }
+std::vector<Record> run_hydrostatic_tank(const CaseContext& ctx, const std::string& case_name) { return run_each_spacing(ctx, case_name, run_at); }
+
+GEOSPH_CASE_DRIVER(hydrostatic_tank, run_hydrostatic_tank);
 
 }  // namespace geosph::verify

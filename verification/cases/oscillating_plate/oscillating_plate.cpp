@@ -6,13 +6,13 @@
 // (as the clamped particles of Gray et al.) but keeps integrating its stress. The tip's period is compared with thin-plate theory. The same run
 // without artificial stress is recorded for the stability table (Gray et al. report tensile
 // clumping there); it is a study, not scored.
-#include "cases/oscillating_plate/oscillating_plate.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -112,8 +112,8 @@ Record run_variant(const CaseConfig& cfg, const CaseContext& ctx, double spacing
 // H/dx = 10, 8.1% at H/dx = 20), so a single resolution cannot verify the 5% model tolerance.
 // The coarser records are steps of that extrapolation (unscored). Without artificial stress: the
 // coarsest spacing, for the stability table (unscored).
-std::vector<Record> run_oscillating_plate(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "oscillating_plate");
+std::vector<Record> run_oscillating_plate(const CaseContext& ctx, const std::string& case_name) {
+  const CaseConfig cfg = load_case(ctx, case_name);
   const auto dxs = cfg.level_numbers("dx");
   std::vector<Record> out;
   for (double dx : dxs) out.push_back(run_variant(cfg, ctx, dx, true));
@@ -137,5 +137,7 @@ std::vector<Record> run_oscillating_plate(const CaseContext& ctx) {
   out.push_back(run_variant(cfg, ctx, dxs.front(), false));
   return out;
 }
+
+GEOSPH_CASE_DRIVER(oscillating_plate, run_oscillating_plate);
 
 }  // namespace geosph::verify

@@ -2,20 +2,20 @@
 // periodic along x, driven by a body force from t = 0. The particle velocities at several times are
 // compared with the series solution; run at two (quick) or three (full) spacings, the observed
 // order of convergence is recorded.
-#include "cases/poiseuille_flow/poiseuille_flow.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "analytical/poiseuille.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
 namespace geosph::verify {
 
-std::vector<Record> run_poiseuille_flow(const CaseContext& ctx) {
-  const CaseConfig cfg = load_case(ctx, "poiseuille_flow");
+std::vector<Record> run_poiseuille_flow(const CaseContext& ctx, const std::string& case_name) {
+  const CaseConfig cfg = load_case(ctx, case_name);
   const auto times = cfg.spec.at("compare_times").get<std::vector<double>>();
   std::vector<Record> out;
   for (const double dx : cfg.level.at("dx").get<std::vector<double>>()) {
@@ -70,5 +70,7 @@ std::vector<Record> run_poiseuille_flow(const CaseContext& ctx) {
   annotate_observed_order(out, 1.0);
   return out;
 }
+
+GEOSPH_CASE_DRIVER(poiseuille_flow, run_poiseuille_flow);
 
 }  // namespace geosph::verify

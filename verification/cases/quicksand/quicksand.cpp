@@ -3,12 +3,12 @@
 // held porous plate and the sand layer resting on it; the hydraulic gradient across the sand rises as the
 // flow sets in. Against the critical gradient i_c = (G_s - 1)/(1 + e) (Terzaghi 1943) and the effective
 // stress at the sand's base, sigma'_v = (gamma' - i gamma_w) depth, as the gradient grows.
-#include "cases/quicksand/quicksand.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -110,6 +110,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_quicksand(const CaseContext& ctx) { return run_each_spacing(ctx, "quicksand", run_at); }
+std::vector<Record> run_quicksand(const CaseContext& ctx, const std::string& case_name) { return run_each_spacing(ctx, case_name, run_at); }
+
+GEOSPH_CASE_DRIVER(quicksand, run_quicksand);
 
 }  // namespace geosph::verify

@@ -5,14 +5,14 @@
 // Scored: the limit coefficient K = F / (0.5 gamma0 H0 H_wall) and the pressure distribution along
 // the wall against K sigma_v. Recorded: the displacement that mobilises 95% of the change from the
 // at-rest force to the Rankine force.
-#include "cases/rankine_earth_pressure/rankine_earth_pressure.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "coupling/soil_structure_contact.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -122,7 +122,11 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_rankine_active(const CaseContext& ctx) { return run_each_spacing(ctx, "rankine_active", run_at); }
-std::vector<Record> run_rankine_passive(const CaseContext& ctx) { return run_each_spacing(ctx, "rankine_passive", run_at); }
+// Cases rankine_active and rankine_passive (case.json "mode"): one driver, two case folders.
+std::vector<Record> run_rankine_earth_pressure(const CaseContext& ctx, const std::string& case_name) {
+  return run_each_spacing(ctx, case_name, run_at);
+}
+
+GEOSPH_CASE_DRIVER(rankine_earth_pressure, run_rankine_earth_pressure);
 
 }  // namespace geosph::verify

@@ -2,13 +2,13 @@
 // porosity jumps from n0 to 1 at the sand's surface, where the pore water's partial density n rho_w and
 // the skeleton's pore-pressure force must stay consistent: the water must stay hydrostatic, the skeleton
 // carry its buoyant weight, and nothing move.
-#include "cases/soil_under_free_water/soil_under_free_water.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "analytical/hydrostatic_tait.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -77,8 +77,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_soil_under_free_water(const CaseContext& ctx) {
-  return run_each_spacing(ctx, "soil_under_free_water", run_at);
+std::vector<Record> run_soil_under_free_water(const CaseContext& ctx, const std::string& case_name) {
+  return run_each_spacing(ctx, case_name, run_at);
 }
+
+GEOSPH_CASE_DRIVER(soil_under_free_water, run_soil_under_free_water);
 
 }  // namespace geosph::verify

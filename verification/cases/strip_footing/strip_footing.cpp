@@ -2,13 +2,13 @@
 // plane strain, sqrt(J2) = c) or Mohr-Coulomb (Tresca itself; case strip_footing_mohr_coulomb): a rigid block of width B is pushed into the soil at a
 // constant slow speed; the bearing pressure q (mean -sigma_yy of the soil rows within 2 dx below
 // the base, |x - x_c| < B/2) rises to a limit that Prandtl's mechanism gives as (2 + pi) c.
-#include "cases/strip_footing/strip_footing.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
@@ -64,6 +64,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_strip_footing(const CaseContext& ctx) { return run_each_spacing(ctx, "strip_footing", run_at); }
+std::vector<Record> run_strip_footing(const CaseContext& ctx, const std::string& case_name) { return run_each_spacing(ctx, case_name, run_at); }
+
+GEOSPH_CASE_DRIVER(strip_footing, run_strip_footing);
 
 }  // namespace geosph::verify

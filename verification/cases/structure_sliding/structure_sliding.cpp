@@ -11,14 +11,14 @@
 //                       for the mass centre).
 // Both: the deepest penetration of a soil particle into the slab over the run (scored), the mobilised
 // basal friction ratio, the spread and the mean mass-centre acceleration (recorded).
-#include "cases/structure_sliding/structure_sliding.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "coupling/soil_structure_contact.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
 
@@ -203,8 +203,10 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 }  // namespace
 
 // Each variant at each spacing of the level (coarse to fine).
-std::vector<Record> run_structure_sliding(const CaseContext& ctx) {
-  return run_each_variant(ctx, "structure_sliding", run_variant);
+std::vector<Record> run_structure_sliding(const CaseContext& ctx, const std::string& case_name) {
+  return run_each_variant(ctx, case_name, run_variant);
 }
+
+GEOSPH_CASE_DRIVER(structure_sliding, run_structure_sliding);
 
 }  // namespace geosph::verify

@@ -3,14 +3,14 @@
 // pore water (B q) and then moves to the skeleton as the water drains through the top. The excess pore
 // pressure isochrones and the degree of consolidation (from the settlement) are compared with the
 // series solution with compressible water (reference/analytical/terzaghi_consolidation.hpp).
-#include "cases/terzaghi_consolidation/terzaghi_consolidation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "analytical/terzaghi_consolidation.hpp"
 #include "coupling/seepage.hpp"
-#include "harness/catalogue.hpp"
+#include "harness/case_record.hpp"
+#include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -122,8 +122,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx) {
-  return run_each_spacing(ctx, "terzaghi_consolidation", run_at);
+std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std::string& case_name) {
+  return run_each_spacing(ctx, case_name, run_at);
 }
+
+GEOSPH_CASE_DRIVER(terzaghi_consolidation, run_terzaghi_consolidation);
 
 }  // namespace geosph::verify

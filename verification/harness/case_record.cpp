@@ -1,0 +1,21 @@
+#include "harness/case_record.hpp"
+
+#include <limits>
+
+namespace geosph::verify {
+
+Record start_record(const CaseConfig& cfg, const CaseContext& ctx) {
+  Record r;
+  r.case_name = cfg.name;
+  r.title = cfg.title;
+  r.level = ctx.level;
+  r.reference = cfg.reference;
+  return r;
+}
+
+void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name, double value, bool ok) {
+  const auto& tol = cfg.tolerance(name);
+  rec.add_metric(name, ok ? value : std::numeric_limits<double>::quiet_NaN(), tol.value, tol.why);
+}
+
+}  // namespace geosph::verify
