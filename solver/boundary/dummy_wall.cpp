@@ -9,21 +9,21 @@ DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
 
 void DummyWalls::allocate(Particles& P) const {
   if (!no_slip_) return;
-  P.field("wall_vx"); P.field("wall_vy"); P.field("wall_vz");
+  for (const char* f : {DummyWallFields::vx, DummyWallFields::vy, DummyWallFields::vz}) P.add_field(f, DummyWallFields::owner);
 }
 
 void DummyWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();
-        double* wvx = no_slip_ ? P.field("wall_vx").data() : nullptr;
-        double* wvy = no_slip_ ? P.field("wall_vy").data() : nullptr;
-        double* wvz = no_slip_ ? P.field("wall_vz").data() : nullptr;
+        double* wvx = no_slip_ ? P.field(DummyWallFields::vx).data() : nullptr;
+        double* wvy = no_slip_ ? P.field(DummyWallFields::vy).data() : nullptr;
+        double* wvz = no_slip_ ? P.field(DummyWallFields::vz).data() : nullptr;
         const auto& eos = fluid_.eos();
         const double volume = std::pow(scene_.dx, scene_.dim);
         // pore water (two-phase): rho is the partial density n rho_w; the wall takes the porosity of its
         // water neighbours and the intrinsic density in the hydrostatic term
-        double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;
+        double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;

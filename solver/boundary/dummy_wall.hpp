@@ -15,6 +15,13 @@
 
 namespace geosph {
 
+// The fluid walls' ghost velocity (no slip only); their pressure, density and mass are the walls'
+// own p, rho, m (the fluid's sums read them).
+struct DummyWallFields {
+  static constexpr const char* owner = "fluid_walls";
+  static constexpr const char* vx = "wall_vx", *vy = "wall_vy", *vz = "wall_vz";
+};
+
 class DummyWalls {
  public:
   DummyWalls(const Scene& scene, const FluidForces& fluid);

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "boundary/body_fields.hpp"
 #include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "soil/soil_fields.hpp"
@@ -49,31 +50,32 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
   lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
     const Kind kind = !b.structure ? Kind::Soil : b.motion.active ? Kind::RigidStructure : Kind::Structure;
     P.add(x, y, z, m.density * vol, m.density, kind, mat);
-    if (b.structure) P.field("structure_body").back() = static_cast<double>(body_index + 1);
-    if (b.fixed) P.field("fixed").back() = 1.0;
+    if (b.structure) P.add_int_field(BodyFields::structure_body, BodyFields::owner).back() = static_cast<std::int32_t>(body_index + 1);
+    if (b.fixed) P.add_int_field(BodyFields::fixed, BodyFields::owner).back() = 1;
     else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
     if (b.surcharge.pressure > 0 && (up == 1 ? y : z) > b.hi[up] - s.dx) {  // top row carries the surcharge
-      P.field("surcharge").back() = b.surcharge.pressure;
-      P.field("surcharge_ramp").back() = b.surcharge.ramp;
+      P.add_field(BodyFields::surcharge, BodyFields::owner).back() = b.surcharge.pressure;
+      P.add_field(BodyFields::surcharge_ramp, BodyFields::owner).back() = b.surcharge.ramp;
     }
     const std::size_t i = P.size() - 1;
     if (geostatic) {
       const double depth = b.hi[up] - (up == 1 ? y : z);
       const double sv = -rho_geo * g * depth;
-      P.field(SoilFields::xx)[i] = k0 * sv;
-      P.field(up == 1 ? SoilFields::yy : SoilFields::zz)[i] = sv;
-      P.field(up == 1 ? SoilFields::zz : SoilFields::yy)[i] = k0 * sv;
+      P.add_field(SoilFields::xx, SoilFields::owner)[i] = k0 * sv;
+      P.add_field(up == 1 ? SoilFields::yy : SoilFields::zz, SoilFields::owner)[i] = sv;
+      P.add_field(up == 1 ? SoilFields::zz : SoilFields::yy, SoilFields::owner)[i] = k0 * sv;
       P.p[i] = -(1.0 + 2.0 * k0) * sv / 3.0;
     } else if (isotropic) {
-      for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz}) P.field(f)[i] = -b.pressure;
+      for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz}) P.add_field(f, SoilFields::owner)[i] = -b.pressure;
       P.p[i] = b.pressure;
     }
     std::visit([&](const auto& model) {  // the model's own state (e.g. Modified Cam Clay's p_c)
       if (model.state_fields.empty()) return;
       materials::SolidState st;
-      for (std::size_t f = 0; f < model.state_fields.size(); ++f) st.f[f] = P.field(model.state_fields[f]).data();
-      const Eigen::Matrix3d sigma = Eigen::Vector3d(P.field(SoilFields::xx)[i], P.field(SoilFields::yy)[i],
-                                                    P.field(SoilFields::zz)[i]).asDiagonal();
+      for (std::size_t f = 0; f < model.state_fields.size(); ++f) st.f[f] = P.add_field(model.state_fields[f], SoilFields::owner).data();
+      const auto stress = [&](const char* f) { const double* s = P.find(f); return s ? s[i] : 0.0; };
+      const Eigen::Matrix3d sigma =
+          Eigen::Vector3d(stress(SoilFields::xx), stress(SoilFields::yy), stress(SoilFields::zz)).asDiagonal();
       model.initialise(sigma, b, st, i);
     }, m.model);
   });
@@ -161,7 +163,7 @@ Particles build_particles(const Scene& s) {
     const double f = smooth_start(0.0, b.ramp);  // a ramped block starts at rest (Simulation::step)
     lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
-      P.field("wall_block").back() = static_cast<double>(k + 1);
+      P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
     });
   }

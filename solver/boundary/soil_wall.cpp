@@ -1,5 +1,7 @@
 #include "boundary/soil_wall.hpp"
 
+#include "boundary/body_fields.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,23 +12,28 @@ namespace geosph {
 SoilWalls::SoilWalls(const Scene& scene) : scene_(scene), no_slip_(scene.walls.slip == "no_slip") {}
 
 void SoilWalls::allocate(Particles& P) const {
-  P.field("soil_wall_vx"); P.field("soil_wall_vy"); P.field("soil_wall_vz");
+  for (const char* f : {SoilWallFields::vx, SoilWallFields::vy, SoilWallFields::vz}) P.add_field(f, SoilWallFields::owner);
+  // until the first update the soil sees the walls as built (boundary/geometry.cpp)
+  P.add_field(SoilWallFields::rho, SoilWallFields::owner) = P.rho;
+  P.add_field(SoilWallFields::m, SoilWallFields::owner) = P.m;
 }
 
 void SoilWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();
-        double* wv[3] = {P.field("soil_wall_vx").data(), P.field("soil_wall_vy").data(), P.field("soil_wall_vz").data()};
+        double* wv[3] = {P.field(SoilWallFields::vx).data(), P.field(SoilWallFields::vy).data(), P.field(SoilWallFields::vz).data()};
+        double* wrho = P.field(SoilWallFields::rho).data();
+        double* wm = P.field(SoilWallFields::m).data();
         double* s[6] = {P.field(SoilFields::xx).data(), P.field(SoilFields::yy).data(), P.field(SoilFields::zz).data(),
                         P.field(SoilFields::xy).data(), P.dim == 3 ? P.field(SoilFields::xz).data() : nullptr,
                         P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr};
         const int ncomp = P.dim == 3 ? 6 : 4;
         const double volume = std::pow(scene_.dx, scene_.dim);
         const double shear_sign = no_slip_ ? 1.0 : -1.0;
-        const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
+        const std::int32_t* block = P.find_int(BodyFields::wall_block);
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
-        const double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;
+        const double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
         const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
@@ -50,18 +57,16 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             if (W > wmax) { wmax = W; mat = P.material[k]; }
           });
           const double rho0 = scene_.soils[mat].density;
-          P.rho[w] = rho0;
-          P.m[w] = covered ? 0.0 : rho0 * volume;  // a covered ghost leaves the soil's sums
+          wrho[w] = rho0;
+          wm[w] = covered ? 0.0 : rho0 * volume;  // a covered ghost leaves the soil's sums
           if (sw <= 0 || covered) {
             for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
-            P.p[w] = 0;
             for (int a = 0; a < 3; ++a) wv[a][w] = 0;
             continue;
           }
           const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
           for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
           for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
-          P.p[w] = -(s[0][w] + s[1][w] + s[2][w]) / 3.0;
           const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
           const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
           if (block && block[w] > 0 && no_slip_) {  // clamp: the embedded material does not move

@@ -28,6 +28,15 @@
 
 namespace geosph {
 
+// The soil's ghost values at the dummy particles, in fields of their own so that a scene with fluid
+// walls too (two-phase) keeps both phases' wall values side by side: velocity, density and mass as the
+// soil's sums see them (the ghost stress is in the SoilFields stress fields).
+struct SoilWallFields {
+  static constexpr const char* owner = "soil_walls";
+  static constexpr const char* vx = "soil_wall_vx", *vy = "soil_wall_vy", *vz = "soil_wall_vz";
+  static constexpr const char* rho = "soil_wall_density", *m = "soil_wall_mass";
+};
+
 class SoilWalls {
  public:
   explicit SoilWalls(const Scene& scene);

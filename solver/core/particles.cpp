@@ -14,11 +14,70 @@ void Particles::add(double px, double py, double pz, double mass, double density
   id.push_back(static_cast<std::int64_t>(id.size()));
   material.push_back(mat);
   for (auto& [name, f] : extra_) f.push_back(0.0);
+  for (auto& [name, f] : ints_) f.push_back(0);
 }
 
-std::vector<double>& Particles::field(const std::string& name) {
-  auto it = extra_.find(name);
-  if (it == extra_.end()) it = extra_.emplace(name, std::vector<double>(size(), 0.0)).first;
+void Particles::claim(std::string_view name, std::string_view owner) {
+  auto [it, fresh] = owners_.emplace(std::string(name), std::string(owner));
+  if (!fresh && it->second != owner)
+    throw FieldError("particle field '" + std::string(name) + "' is owned by " + it->second + "; " +
+                     std::string(owner) + " cannot create it too");
+}
+
+std::vector<double>& Particles::add_field(std::string_view name, std::string_view owner) {
+  if (has_int_field(name)) throw FieldError("particle field '" + std::string(name) + "' exists as an integer field");
+  claim(name, owner);
+  auto it = extra_.find(std::string(name));
+  if (it == extra_.end()) it = extra_.emplace(std::string(name), std::vector<double>(size(), 0.0)).first;
+  return it->second;
+}
+
+std::vector<std::int32_t>& Particles::add_int_field(std::string_view name, std::string_view owner) {
+  if (has_field(name)) throw FieldError("particle field '" + std::string(name) + "' exists as a real field");
+  claim(name, owner);
+  auto it = ints_.find(std::string(name));
+  if (it == ints_.end()) it = ints_.emplace(std::string(name), std::vector<std::int32_t>(size(), 0)).first;
+  return it->second;
+}
+
+void Particles::missing(std::string_view name) const {
+  std::string known;
+  for (const auto& [n, f] : extra_) known += " " + n;
+  for (const auto& [n, f] : ints_) known += " " + n;
+  throw FieldError("no particle field '" + std::string(name) + "' (this scene has:" + known + ")");
+}
+
+std::vector<double>& Particles::field(std::string_view name) {
+  auto it = extra_.find(std::string(name));
+  if (it == extra_.end()) missing(name);
+  return it->second;
+}
+const std::vector<double>& Particles::field(std::string_view name) const {
+  auto it = extra_.find(std::string(name));
+  if (it == extra_.end()) missing(name);
+  return it->second;
+}
+std::vector<std::int32_t>& Particles::int_field(std::string_view name) {
+  auto it = ints_.find(std::string(name));
+  if (it == ints_.end()) missing(name);
+  return it->second;
+}
+const std::vector<std::int32_t>& Particles::int_field(std::string_view name) const {
+  auto it = ints_.find(std::string(name));
+  if (it == ints_.end()) missing(name);
+  return it->second;
+}
+const double* Particles::find(std::string_view name) const {
+  auto it = extra_.find(std::string(name));
+  return it == extra_.end() ? nullptr : it->second.data();
+}
+const std::int32_t* Particles::find_int(std::string_view name) const {
+  auto it = ints_.find(std::string(name));
+  return it == ints_.end() ? nullptr : it->second.data();
+}
+const std::string& Particles::owner(std::string_view name) const {
+  auto it = owners_.find(std::string(name));
+  if (it == owners_.end()) missing(name);
   return it->second;
 }
 
@@ -36,6 +95,8 @@ void apply(std::vector<T>& v, const std::vector<std::uint32_t>& order, std::vect
 void Particles::permute(const std::vector<std::uint32_t>& order) {
   for (auto* f : {&x, &y, &z, &vx, &vy, &vz, &ax, &ay, &az, &rho, &drho, &p, &m}) apply(*f, order, scratch_);
   for (auto& [name, f] : extra_) apply(f, order, scratch_);
+  std::vector<std::int32_t> t32;
+  for (auto& [name, f] : ints_) apply(f, order, t32);
   std::vector<Kind> tk; apply(kind, order, tk);
   std::vector<std::int64_t> ti; apply(id, order, ti);
   std::vector<std::uint16_t> tm; apply(material, order, tm);

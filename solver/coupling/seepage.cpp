@@ -1,5 +1,8 @@
 #include "coupling/seepage.hpp"
 
+#include "boundary/body_fields.hpp"
+#include "boundary/soil_wall.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,18 +52,18 @@ double Seepage::undrained_wave_speed(double soil_wave_speed) const {
 }
 
 void Seepage::allocate(Particles& P) const {
-  P.field(SeepageFields::porosity);
-  P.field(SeepageFields::conductivity);
-  P.field(SeepageFields::drag_c);
-  P.field(SeepageFields::porosity_rate);
-  P.field(SeepageFields::other_phase_sum);
-  P.field(SeepageFields::skeleton_sum);
-  P.field(SeepageFields::gx); P.field(SeepageFields::gy); P.field(SeepageFields::gz);
-  P.field(SeepageFields::nx); P.field(SeepageFields::ny); P.field(SeepageFields::nz);
+  P.add_field(SeepageFields::porosity, "seepage");
+  P.add_field(SeepageFields::conductivity, "seepage");
+  P.add_field(SeepageFields::drag_c, "seepage");
+  P.add_field(SeepageFields::porosity_rate, "seepage");
+  P.add_field(SeepageFields::other_phase_sum, "seepage");
+  P.add_field(SeepageFields::skeleton_sum, "seepage");
+  P.add_field(SeepageFields::gx, "seepage"); P.add_field(SeepageFields::gy, "seepage"); P.add_field(SeepageFields::gz, "seepage");
+  P.add_field(SeepageFields::nx, "seepage"); P.add_field(SeepageFields::ny, "seepage"); P.add_field(SeepageFields::nz, "seepage");
   for (const char* f : {SeepageFields::partner_vx, SeepageFields::partner_vy, SeepageFields::partner_vz,
                         SeepageFields::partner_ax, SeepageFields::partner_ay, SeepageFields::partner_az,
                         SeepageFields::partner_rho})
-    P.field(f);
+    P.add_field(f, "seepage");
 }
 
 void Seepage::initialise(Particles& P, const CellList& cells) const {
@@ -100,6 +103,9 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   double* Sg = P.field(SeepageFields::skeleton_sum).data();
   double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(), P.field(SeepageFields::gz).data()};
   double* GN[3] = {P.field(SeepageFields::nx).data(), P.field(SeepageFields::ny).data(), P.field(SeepageFields::nz).data()};
+  // walls bounding the skeleton count with the soil's ghost volume (boundary/soil_wall.hpp)
+  const double* swm = P.find(SoilWallFields::m);
+  const double* swrho = P.find(SoilWallFields::rho);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
@@ -114,7 +120,8 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
       }
       const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
       if (kj != other && !skeleton) return;
-      const double Vj = P.m[j] / P.rho[j], r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
+      const double Vj = skeleton && swm ? swm[j] / swrho[j] : P.m[j] / P.rho[j];
+      const double r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
       if (kj == other) sum += Vj * W;
       if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
     });
@@ -219,7 +226,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
                    P.field(SeepageFields::partner_az).data()};
   double* prho = P.field(SeepageFields::partner_rho).data();
   const double gw = gamma_w_;
-  const double* fixed = P.has_field("fixed") ? P.extra_fields().at("fixed").data() : nullptr;
+  const std::int32_t* fixed = P.find_int(BodyFields::fixed);
   auto saturated = [&](std::size_t i) { return P.kind[i] == Kind::Soil && scene_.soils[P.material[i]].saturated(); };
   auto beta = [&](std::size_t s) { return por[s] * por[s] * gw / cond[s]; };  // n^2 gamma_w / k
   // 1. pore-pressure force on the skeleton: the adjoint of the water's porosity rate (1 - n) div v_s
@@ -311,7 +318,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
 // Unconditionally stable in the drag, and for stiff drag (low permeability) the pair moves as one
 // body under the sum of its forces (a point-implicit v_i' = (v_i + h a_i + h C v_p)/(1 + h C) would
 // lose the applied force's momentum: measured on an undrained column, the load did not reach the base).
-void Seepage::kick(Particles& P, double h, const double* fixed) const {
+void Seepage::kick(Particles& P, double h, const std::int32_t* fixed) const {
   const auto& f = P.extra_fields();
   const double* C = f.at(SeepageFields::drag_c).data();
   const double* prho = f.at(SeepageFields::partner_rho).data();

@@ -73,7 +73,7 @@ class Seepage {
   void apply(Particles& P, const CellList& cells) const;
   // Half kick over h, with the implicit drag, of the integrated particles that have a drag partner
   // (drag rate > 0; `fixed` particles excluded); the others take the plain kick.
-  void kick(Particles& P, double h, const double* fixed) const;
+  void kick(Particles& P, double h, const std::int32_t* fixed) const;
   // Hydraulic conductivity of soil material `mat` at porosity n [m/s].
   double conductivity(std::size_t mat, double n) const;
   // Undrained P-wave speed of the mixture, sqrt((K_w/n + K + 4G/3) / rho_sat), for the time step.

@@ -1,5 +1,7 @@
 #include "coupling/soil_structure_contact.hpp"
 
+#include "boundary/body_fields.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -14,12 +16,12 @@ SoilStructureContact::SoilStructureContact(const Scene& scene) : scene_(scene) {
 void SoilStructureContact::allocate(Particles& P) const {
   for (const char* f : {ContactFields::fx, ContactFields::fy, ContactFields::fz, ContactFields::nx, ContactFields::ny,
                         ContactFields::nz})
-    P.field(f);
+    P.add_field(f, "soil_structure_contact");
 }
 
 template <class K>
 void SoilStructureContact::normals_with(const K& kernel, Particles& P, const CellList& cells) const {
-  const double* body = P.field("structure_body").data();
+  const std::int32_t* body = P.int_field(BodyFields::structure_body).data();
   double* nx = P.field(ContactFields::nx).data();
   double* ny = P.field(ContactFields::ny).data();
   double* nz = P.field(ContactFields::nz).data();
@@ -43,11 +45,11 @@ void SoilStructureContact::normals_with(const K& kernel, Particles& P, const Cel
 void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt) const {
   std::visit([&](const auto& k) { normals_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
   const std::size_t n = P.size();
-  const double* body = P.field("structure_body").data();
+  const std::int32_t* body = P.int_field(BodyFields::structure_body).data();
   const double* nx = P.field(ContactFields::nx).data();
   const double* ny = P.field(ContactFields::ny).data();
   const double* nz = P.field(ContactFields::nz).data();
-  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  const std::int32_t* fixed = P.find_int(BodyFields::fixed);
   // a structure particle that the contact force moves: deformable, not held by a clamp
   const auto free_structure = [&](std::size_t j) { return P.kind[j] == Kind::Structure && !(fixed && fixed[j] > 0); };
   const double dx0 = scene_.dx;

@@ -1,5 +1,7 @@
 #include "fluid/fluid_forces.hpp"
 
+#include "boundary/dummy_wall.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,7 +39,7 @@ void FluidForces::update_pressure(Particles& P) const {
 
 const double* FluidForces::porosity(const Particles& P) const {
   if (!scene_.two_phase()) return nullptr;
-  return P.extra_fields().at("porosity").data();
+  return P.field("porosity").data();  // SeepageFields::porosity
 }
 
 void FluidForces::continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
@@ -94,10 +96,9 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
   // on the Poiseuille case: the error stalls at 1.0-1.4% of v_max). Pairs never come within 0.01 h
   // in WCSPH, so the smaller eta^2 = 1e-4 h^2 only guards against r = 0.
   const double eta2_lam = 1e-4 * h * h;
-  const bool has_wall_velocity = P.has_field("wall_vx");
-  const double* wvx = has_wall_velocity ? P.field("wall_vx").data() : nullptr;
-  const double* wvy = has_wall_velocity ? P.field("wall_vy").data() : nullptr;
-  const double* wvz = has_wall_velocity ? P.field("wall_vz").data() : nullptr;
+  const double* wvx = P.find(DummyWallFields::vx);  // no-slip walls only
+  const double* wvy = P.find(DummyWallFields::vy);
+  const double* wvz = P.find(DummyWallFields::vz);
   const double D = repulsive_D_, r0 = repulsive_r0_;
   const auto bf = scene_.body_force;
   // p/rho^2 once per particle (fluid and extrapolated walls) instead of once per pair

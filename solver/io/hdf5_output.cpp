@@ -54,6 +54,11 @@ void Hdf5Output::write(const Particles& P, double time, long step) {
     write_dataset(file, fname, H5T_NATIVE_DOUBLE, f.data(), n, 1);
     extra.push_back(fname);
   }
+  std::vector<std::string> ints;
+  for (const auto& [fname, f] : P.int_fields()) {
+    write_dataset(file, fname, H5T_NATIVE_INT32, f.data(), n, 1);
+    ints.push_back(fname);
+  }
   hid_t aspace = H5Screate(H5S_SCALAR);
   hid_t attr = H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, aspace, H5P_DEFAULT, H5P_DEFAULT);
   H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
@@ -64,7 +69,7 @@ void Hdf5Output::write(const Particles& P, double time, long step) {
   H5Sclose(aspace);
   check(H5Fclose(file), tmp_path.string());
   std::filesystem::rename(tmp_path, final_path);
-  entries_.push_back({name, time, n, extra});
+  entries_.push_back({name, time, n, extra, ints});
   write_index();
 }
 
@@ -97,6 +102,7 @@ void Hdf5Output::write_index() const {
       attr("kind", 1, "Int", 4);
       attr("id", 1, "Int", 8);
       for (const auto& f : e.extra) attr(f, 1, "Float", 8);
+      for (const auto& f : e.ints) attr(f, 1, "Int", 4);
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";

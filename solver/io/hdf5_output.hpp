@@ -19,7 +19,7 @@ class Hdf5Output {
 
  private:
   void write_index() const;
-  struct Entry { std::string file; double time; std::size_t n; std::vector<std::string> extra; };
+  struct Entry { std::string file; double time; std::size_t n; std::vector<std::string> extra, ints; };
   std::filesystem::path dir_;
   std::vector<Entry> entries_;
 };

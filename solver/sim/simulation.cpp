@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "boundary/body_fields.hpp"
 #include "boundary/geometry.hpp"
 #include "io/json_fields.hpp"
 
@@ -99,15 +100,15 @@ void Simulation::forces() {
     if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
     fluid_->momentum(P_, cells_, g);
   }
-  if (P_.has_field("surcharge")) apply_surcharge();
+  if (P_.has_field(BodyFields::surcharge)) apply_surcharge();
   if (seepage_) seepage_->apply(P_, cells_);  // after every other force: the drag pairs their sums
   if (contact_) contact_->apply(P_, cells_, dt_);
 }
 
 // Surcharge pressure q on a soil body's top row: force q dx^(d-1) per particle, downward, ramped.
 void Simulation::apply_surcharge() {
-  const double* q = P_.field("surcharge").data();
-  const double* ramp = P_.field("surcharge_ramp").data();
+  const double* q = P_.field(BodyFields::surcharge).data();
+  const double* ramp = P_.field(BodyFields::surcharge_ramp).data();
   const double area = std::pow(scene_.dx, scene_.dim - 1);
   std::vector<double>& a = scene_.dim == 2 ? P_.ay : P_.az;
   for (std::size_t i = 0; i < P_.size(); ++i)
@@ -117,7 +118,7 @@ void Simulation::apply_surcharge() {
 void Simulation::kick(double half) {
   auto& P = P_;
   const std::size_t n = P.size();
-  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
+  const std::int32_t* fixed = P.find_int(BodyFields::fixed);
   const double* C = seepage_ ? P.field(SeepageFields::drag_c).data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -144,8 +145,8 @@ void Simulation::step() {
   const double half = 0.5 * dt_, dt = dt_;
   const auto& dom = scene_.domain;
   auto& P = P_;
-  const double* fixed = P.has_field("fixed") ? P.field("fixed").data() : nullptr;
-  const double* block = P.has_field("wall_block") ? P.field("wall_block").data() : nullptr;
+  const std::int32_t* fixed = P.find_int(BodyFields::fixed);
+  const std::int32_t* block = P.find_int(BodyFields::wall_block);
   kick(half);
   const auto& blocks = scene_.walls.blocks;
 #pragma omp parallel for schedule(static)

@@ -5,6 +5,7 @@
 namespace geosph {
 
 struct SoilFields {
+  static constexpr const char* owner = "soil";
   static constexpr const char* xx = "stress_xx";
   static constexpr const char* yy = "stress_yy";
   static constexpr const char* zz = "stress_zz";

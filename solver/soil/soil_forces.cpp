@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "boundary/soil_wall.hpp"
 #include "sim/stability.hpp"
 
 namespace geosph {
@@ -52,11 +53,11 @@ SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
 
 void SoilForces::allocate(Particles& P) const {
   for (const char* f : {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::plastic_strain})
-    P.field(f);
-  if (P.dim == 3) { P.field(SoilFields::xz); P.field(SoilFields::yz); }
-  for (const auto& f : state_fields_) P.field(f);
+    P.add_field(f, SoilFields::owner);
+  if (P.dim == 3) { P.add_field(SoilFields::xz, SoilFields::owner); P.add_field(SoilFields::yz, SoilFields::owner); }
+  for (const auto& f : state_fields_) P.add_field(f, SoilFields::owner);
   if (has_pressure_dependent_) {
-    P.field(SoilFields::wave_speed);
+    P.add_field(SoilFields::wave_speed, SoilFields::owner);
     update_wave_speeds(P);
   }
 }
@@ -103,10 +104,11 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const std::size_t n = P.size();
   const StressView sv(P);
   double* eps_p = P.field(SoilFields::plastic_strain).data();
-  const bool wall_velocity = P.has_field("soil_wall_vx");
-  const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
-  const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
-  const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
+  const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
+  const double* wvy = P.find(SoilWallFields::vy);
+  const double* wvz = P.find(SoilWallFields::vz);
+  const double* wm = P.find(SoilWallFields::m);
+  const double* wrho = P.find(SoilWallFields::rho);
   const std::vector<materials::SolidState> states = bind_states(P);
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
@@ -123,11 +125,12 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       if (!continuum_pair(ki, kj)) return;
       const double fw = kernel.gradW_over_r(std::sqrt(r2));
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
-      const double Vj = P.m[j] / P.rho[j];
+      const bool wall = kj == Kind::DummyWall;
+      const double mj = wall ? wm[j] : P.m[j], Vj = mj / (wall ? wrho[j] : P.rho[j]);
       // continuity with the wall's own (prescribed) velocity
-      drho += P.m[j] * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
+      drho += mj * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
       double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
-      if (kj == Kind::DummyWall && wvx) {  // the wall's ghost velocity (boundary/soil_wall.cpp)
+      if (wall && wvx) {  // the wall's ghost velocity (boundary/soil_wall.cpp)
         vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j];
       }
       const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
@@ -204,11 +207,13 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
   S_.resize(n);
   R_.resize(n);
   const StressView sv(P);
+  const double* wrho = P.find(SoilWallFields::rho);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(P.kind[i]) && P.kind[i] != Kind::DummyWall) continue;
     const Eigen::Matrix3d s = sv.get(i);
-    const double inv_r2 = 1.0 / (P.rho[i] * P.rho[i]);
+    const double rho = P.kind[i] == Kind::DummyWall ? wrho[i] : P.rho[i];
+    const double inv_r2 = 1.0 / (rho * rho);
     S_[i] = {s(0, 0) * inv_r2, s(1, 1) * inv_r2, s(2, 2) * inv_r2, s(0, 1) * inv_r2, s(0, 2) * inv_r2, s(1, 2) * inv_r2};
     // Artificial stress (Gray, Monaghan & Swift 2001, eqs. 3.2-3.5): in the principal frame,
     // R'_a = -eps sigma'_a / rho^2 where sigma'_a > 0 (tension), else 0; rotated back.
@@ -235,10 +240,11 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   const double w_dx = kernel.W(scene_.dx);
-  const bool wall_velocity = P.has_field("soil_wall_vx");
-  const double* wvx = wall_velocity ? P.field("soil_wall_vx").data() : nullptr;
-  const double* wvy = wall_velocity ? P.field("soil_wall_vy").data() : nullptr;
-  const double* wvz = wall_velocity ? P.field("soil_wall_vz").data() : nullptr;
+  const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
+  const double* wvy = P.find(SoilWallFields::vy);
+  const double* wvz = P.find(SoilWallFields::vz);
+  const double* wm = P.find(SoilWallFields::m);
+  const double* wrho = P.find(SoilWallFields::rho);
   const double* cw = has_pressure_dependent_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
@@ -260,7 +266,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
       const double r = std::sqrt(r2);
       const double fw = kernel.gradW_over_r(r);
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
-      const double mj = P.m[j];
+      const bool wall = kj == Kind::DummyWall;
+      const double mj = wall ? wm[j] : P.m[j], rhoj = wall ? wrho[j] : P.rho[j];
       const auto& Sj = S_[j];
       double T[6];
       for (int c = 0; c < 6; ++c) T[c] = Si[c] + Sj[c];
@@ -270,7 +277,6 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         const auto& Rj = R_[j];
         for (int c = 0; c < 6; ++c) T[c] += f * (Ri[c] + Rj[c]);
       }
-      const bool wall = kj == Kind::DummyWall;
       {
         double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
         if (wall && wvx) { ux = vxi - wvx[j]; uy = vyi - wvy[j]; uz = vzi - wvz[j]; }
@@ -278,7 +284,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         if (vr < 0) {
           const double mu = h * vr / (r2 + eta2);
           const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
-          const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + P.rho[j]));
+          const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
           T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
         }
       }

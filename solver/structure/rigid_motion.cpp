@@ -1,5 +1,7 @@
 #include "structure/rigid_motion.hpp"
 
+#include "boundary/body_fields.hpp"
+
 #include <cmath>
 #include "core/time_step.hpp"
 
@@ -9,7 +11,7 @@ namespace {
 // f(i, body b, its motion) for every rigid structure particle
 template <class F>
 void for_each_rigid(Particles& P, const Scene& scene, F&& f) {
-  const double* body = P.field("structure_body").data();
+  const std::int32_t* body = P.int_field(BodyFields::structure_body).data();
   const std::size_t n = P.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::RigidStructure) continue;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "boundary/body_fields.hpp"
 #include "coupling/soil_structure_contact.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
@@ -66,7 +67,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     F_sum += F;
     H_sum += H_wall;
     const auto& fx = P.extra_fields().at(ContactFields::fx);
-    const auto& body = P.extra_fields().at("structure_body");
+    const auto& body = P.int_field(BodyFields::structure_body);
     // each face particle's force acts on its own face of height dx: the bin pressure is the mean of
     // -f_x / dx over the particles in the bin (dividing the bin's force by the bin height instead
     // aliases the dx lattice against 0.1 H_wall: a bin holding 5 particles where 4.15 fit read 20% high)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "boundary/body_fields.hpp"
 #include "coupling/soil_structure_contact.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
@@ -111,7 +112,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
     const auto& fields = P.extra_fields();
     const double* cfx = fields.at(ContactFields::fx).data();
     const double* cfy = fields.at(ContactFields::fy).data();
-    const double* sbody = fields.at("structure_body").data();
+    const std::int32_t* sbody = P.int_field(BodyFields::structure_body).data();
     double fn_all = 0, fn_stick = 0;
     for (std::size_t j = 0; j < P.size(); ++j) {
       if (static_cast<std::size_t>(sbody[j]) != slab_body + 1 || !(-cfy[j] > 0)) continue;

@@ -1,0 +1,16 @@
+// Per-particle fields the particle builder (boundary/geometry.cpp) writes from the scene's bodies and
+// walls; created only when a body or wall declares them.
+#pragma once
+
+namespace geosph {
+
+struct BodyFields {
+  static constexpr const char* owner = "geometry";
+  static constexpr const char* fixed = "fixed";                    // int flag: held in place (velocity zero)
+  static constexpr const char* structure_body = "structure_body";  // int: body index + 1 of a structure particle
+  static constexpr const char* wall_block = "wall_block";          // int: walls.blocks index + 1 of a block particle
+  static constexpr const char* surcharge = "surcharge";            // [Pa] on a soil body's top row
+  static constexpr const char* surcharge_ramp = "surcharge_ramp";  // [s]
+};
+
+}  // namespace geosph
