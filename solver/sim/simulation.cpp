@@ -5,6 +5,7 @@
 #include "boundary/body_fields.hpp"
 #include "boundary/geometry.hpp"
 #include "io/json_fields.hpp"
+#include "sim/stages.hpp"
 
 namespace geosph {
 
@@ -55,10 +56,12 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     throw InputError(scene_.file + ": field 'domain': particle " + std::to_string(P_.id[outside]) + " at (" +
                      std::to_string(P_.x[outside]) + ", " + std::to_string(P_.y[outside]) + ", " +
                      std::to_string(P_.z[outside]) + ") starts outside the domain");
+  stages_ = stage_table();
+  check_stages(stages_);
   neighbour_search();
   if (seepage_) seepage_->initialise(P_, cells_);
   choose_time_step();  // acoustic limit only (nothing moves yet): the contact needs the step length
-  forces();
+  run_hook(Hook::Forces);
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();
 }
@@ -86,23 +89,73 @@ void Simulation::neighbour_search() {
   }
 }
 
-// Wall particles serve each phase in turn (soil, then fluid: the fluid's wall values are the ones the
-// next continuity step reads); the seepage coupling reads the water walls' pressure.
-void Simulation::forces() {
-  const auto g = gravity_at(t_);
-  if (seepage_) seepage_->update_porosity(P_, cells_);
-  if (soil_) {
-    if (soil_walls_) soil_walls_->update(P_, cells_, g);
-    soil_->momentum(P_, cells_, g);
-  }
-  if (fluid_) {
-    fluid_->update_pressure(P_);
-    if (dummy_walls_) dummy_walls_->update(P_, cells_, g);
-    fluid_->momentum(P_, cells_, g);
-  }
-  if (P_.has_field(BodyFields::surcharge)) apply_surcharge();
-  if (seepage_) seepage_->apply(P_, cells_);  // after every other force: the drag pairs their sums
-  if (contact_) contact_->apply(P_, cells_, dt_);
+// The stages of the step, in order, for the modules this scene has (sim/stages.hpp). Rates: the fluid's
+// continuity reads the fluid walls' values from the last forces hook; in a two-phase scene the soil
+// walls are re-extrapolated at x^{n+1} before the soil's stress update. Forces: the soil walls before
+// the soil's momentum, the fluid walls after the fluid pressure; the seepage coupling after every other
+// force (the drag pairs their sums), the contact last (it corrects the accelerations of touching pairs).
+std::vector<Stage> Simulation::stage_table() {
+  std::vector<Stage> t;
+  const auto add = [&](bool present, Stage st) {
+    if (present) t.push_back(std::move(st));
+  };
+  const bool surcharge = P_.has_field(BodyFields::surcharge);
+  // drift
+  add(rigid_ != nullptr, {"rigid_motion", Hook::Drift, {"t"}, {"x[rigid]", "v[rigid]"}, {},
+                          [this] { rigid_->advance(P_, t_, dt_); }});
+  // rates at x^{n+1}, v^{n+1/2}
+  add(fluid_ != nullptr, {"fluid_continuity", Hook::Rates, {"x", "v", "rho", "m", "p", "wall_v*", "porosity"},
+                          {"drho[fluid]"}, {}, [this] { fluid_->continuity(P_, cells_, gravity_at(t_)); }});
+  add(seepage_ != nullptr, {"seepage_porosity_rate", Hook::Rates, {"x", "v", "porosity"}, {"porosity_rate"}, {},
+                            [this] { seepage_->porosity_rate(P_, cells_); }});
+  add(seepage_ && soil_walls_, {"soil_walls", Hook::Rates, {"x", "v", "stress[soil]", "rho[soil]"},
+                                {"stress[walls]", "soil_wall_v*", "soil_wall_density", "soil_wall_mass"}, {},
+                                [this] { soil_walls_->update(P_, cells_, gravity_at(t_)); }});
+  add(soil_ != nullptr, {"solid_stress", Hook::Rates, {"x", "v", "stress", "soil_wall_*", "model state"},
+                         {"drho[solid]", "stress[solid]", "p[solid]", "plastic_strain", "model state", "wave_speed"}, {},
+                         [this] { soil_->update_stress(P_, cells_, dt_, step_, t_); }});
+  // integrate
+  add(true, {"density", Hook::Integrate, {"drho"}, {"rho[moving]"}, {}, [this] { integrate_density(); }});
+  add(seepage_ != nullptr, {"seepage_porosity", Hook::Integrate, {"porosity_rate"}, {"porosity[water]"}, {},
+                            [this] { seepage_->advance_porosity(P_, dt_); }});
+  // forces at the new state
+  add(seepage_ != nullptr, {"seepage_skeleton_porosity", Hook::Forces, {"x", "rho", "m", "porosity", "soil_wall_*"},
+                            {"porosity[soil]", "hydraulic_conductivity", "kernel sums"}, {},
+                            [this] { seepage_->update_porosity(P_, cells_); }});
+  add(soil_walls_ != nullptr, {"soil_walls", Hook::Forces, {"x", "v", "stress[soil]", "rho[soil]"},
+                               {"stress[walls]", "soil_wall_v*", "soil_wall_density", "soil_wall_mass"}, {},
+                               [this] { soil_walls_->update(P_, cells_, gravity_at(t_)); }});
+  add(soil_ != nullptr, {"solid_momentum", Hook::Forces, {"x", "v", "rho", "m", "stress", "soil_wall_*"},
+                         {"a[solid]"}, {}, [this] { soil_->momentum(P_, cells_, gravity_at(t_)); }});
+  add(fluid_ != nullptr, {"fluid_pressure", Hook::Forces, {"rho[fluid]", "porosity"}, {"p[fluid]"}, {},
+                          [this] { fluid_->update_pressure(P_); }});
+  add(dummy_walls_ != nullptr, {"fluid_walls", Hook::Forces, {"x", "v", "p[fluid]", "rho[fluid]", "porosity"},
+                                {"p[walls]", "rho[walls]", "m[walls]", "wall_v*", "porosity[walls]"}, {},
+                                [this] { dummy_walls_->update(P_, cells_, gravity_at(t_)); }});
+  add(fluid_ != nullptr, {"fluid_momentum", Hook::Forces, {"x", "v", "rho", "m", "p", "wall_v*"}, {"a[fluid]"}, {},
+                          [this] { fluid_->momentum(P_, cells_, gravity_at(t_)); }});
+  add(surcharge, {"surcharge", Hook::Forces, {"surcharge", "surcharge_ramp", "t"}, {}, {"a[solid]"},
+                  [this] { apply_surcharge(); }});
+  add(seepage_ != nullptr, {"seepage_coupling", Hook::Forces, {"p", "porosity", "kernel sums"},
+                            {"drag_rate", "drag_partner_*"}, {"a[solid]", "a[fluid]"},
+                            [this] { seepage_->apply(P_, cells_); }});
+  add(contact_ != nullptr, {"soil_structure_contact", Hook::Forces, {"x", "v", "a", "structure_body"},
+                            {"contact_force", "contact_normal"}, {"a[solid]"},
+                            [this] { contact_->apply(P_, cells_, dt_); }});
+  return t;
+}
+
+void Simulation::run_hook(Hook h) {
+  for (auto& s : stages_)
+    if (s.hook == h) s.run();
+}
+
+void Simulation::integrate_density() {
+  const std::size_t n = P_.size();
+  const double dt = dt_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    if (is_moving(P_.kind[i])) P_.rho[i] += dt * P_.drho[i];
 }
 
 // Surcharge pressure q on a soil body's top row: force q dx^(d-1) per particle, downward, ramped.
@@ -167,20 +220,13 @@ void Simulation::step() {
       else if (*q[a] < dom.lo[a]) *q[a] += dom.length(a);
     }
   }
-  if (rigid_) rigid_->advance(P_, t_, dt);
+  run_hook(Hook::Drift);
   t_ += dt;
   ++step_;
   neighbour_search();
-  if (fluid_) fluid_->continuity(P_, cells_, gravity_at(t_));
-  if (seepage_) seepage_->porosity_rate(P_, cells_);
-  // two-phase: the walls hold the water's values from forces(); the soil's continuity needs its own
-  if (seepage_ && soil_walls_) soil_walls_->update(P_, cells_, gravity_at(t_));
-  if (soil_) soil_->update_stress(P_, cells_, dt, step_, t_);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i)
-    if (is_moving(P.kind[i])) P.rho[i] += dt * P.drho[i];
-  if (seepage_) seepage_->advance_porosity(P_, dt);
-  forces();
+  run_hook(Hook::Rates);
+  run_hook(Hook::Integrate);
+  run_hook(Hook::Forces);
   kick(half);
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   choose_time_step();

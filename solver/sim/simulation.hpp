@@ -20,6 +20,7 @@
 #include "fluid/fluid_forces.hpp"
 #include "io/scene.hpp"
 #include "sim/stability.hpp"
+#include "sim/stages.hpp"
 #include "soil/soil_forces.hpp"
 #include "structure/rigid_motion.hpp"
 
@@ -28,6 +29,8 @@ namespace geosph {
 class Simulation {
  public:
   explicit Simulation(Scene scene);
+  Simulation(const Simulation&) = delete;  // the stages point at this object
+  Simulation& operator=(const Simulation&) = delete;
 
   // Advances one step; throws InstabilityError with a diagnosis if the state blows up.
   void step();
@@ -49,13 +52,17 @@ class Simulation {
   const Seepage* seepage() const { return seepage_.get(); }
   // prescribed motion of the rigid structures (null if the scene has none)
   const RigidMotions* rigid_motions() const { return rigid_.get(); }
+  // The time step's stages in order, with what each reads and writes (sim/stages.hpp).
+  const std::vector<Stage>& stages() const { return stages_; }
   // Gravity at time t, ramped smoothly from gravity_ramp_from x g over scene.gravity_ramp (Adami et al.
   // 2012, eq. 33, there from zero).
   std::array<double, 3> gravity_at(double t) const;
 
  private:
   void neighbour_search();  // cell list (and, every reorder_every steps, particles sorted by cell)
-  void forces();            // pressure, wall extrapolation, momentum at the current state
+  std::vector<Stage> stage_table();  // the step's stages in order, for this scene's modules
+  void run_hook(Hook h);
+  void integrate_density();  // rho += dt drho of the integrated particles
   void choose_time_step();
   // Half kick v += dt/2 a of the integrated particles; with pore water the drag is implicit
   // (Seepage::kick).
@@ -72,6 +79,7 @@ class Simulation {
   std::unique_ptr<RigidMotions> rigid_;
   std::unique_ptr<SoilStructureContact> contact_;
   std::unique_ptr<Seepage> seepage_;
+  std::vector<Stage> stages_;
   StateBounds bounds_;
   TimeStepLimits limits_;
   StateSummary state_;
