@@ -1,7 +1,9 @@
 // The `geosph` command:
 //   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output
 //   geosph verify [--case NAME] [--level quick|full] --out DIR   run catalogue cases, write result records
-//   geosph info                          version, threads, catalogue (the case folders found)
+//   geosph info                          version, threads, catalogue
+//   geosph stages SCENE.json             the time step's stages for that scene (sim/stages.hpp)
+// Global options (--threads N) go before or after the subcommand. (the case folders found)
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
@@ -124,6 +126,7 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
 int main(int argc, char** argv) {
   CLI::App app{"GeoSPH: SPH for geomaterials with a verification catalogue"};
   app.require_subcommand(1);
+  app.fallthrough();  // the app's options (--threads) are accepted after the subcommand too
   int threads = 0;
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
 
@@ -145,11 +148,20 @@ int main(int argc, char** argv) {
 
   auto* info = app.add_subcommand("info", "version, threads and the verification catalogue");
 
+  auto* stages = app.add_subcommand("stages", "the time step's stages for a scene, in order, with the fields each reads and writes");
+  std::string stages_scene;
+  stages->add_option("scene", stages_scene, "scene file (JSON)")->required();
+
   CLI11_PARSE(app, argc, argv);
   if (threads > 0) omp_set_num_threads(threads);
   try {
     if (*run) return cmd_run(scene_path, out_dir, quiet);
     if (*ver) return cmd_verify(cases, level, vout, vprogress);
+    if (*stages) {
+      Simulation sim(load_scene(stages_scene));
+      std::printf("%s", describe_stages(sim.stages()).c_str());
+      return 0;
+    }
     if (*info) {
       std::printf("GeoSPH 0.1.0\nOpenMP threads: %d\ndata dir: %s\ncatalogue:\n", omp_get_max_threads(),
                   verify::default_data_dir().c_str());
