@@ -9,6 +9,8 @@ struct BodyFields {
   static constexpr const char* fixed = "fixed";                    // int flag: held in place (velocity zero)
   static constexpr const char* structure_body = "structure_body";  // int: body index + 1 of a structure particle
   static constexpr const char* wall_block = "wall_block";          // int: walls.blocks index + 1 of a block particle
+  static constexpr const char* wall_free_slip = "wall_free_slip";  // int flag: the wall's container is free-slip
+                                                                    // (only where containers differ in slip)
   static constexpr const char* surcharge = "surcharge";            // [Pa] on a soil body's top row
   static constexpr const char* surcharge_ramp = "surcharge_ramp";  // [s]
 };

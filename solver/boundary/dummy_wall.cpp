@@ -2,10 +2,12 @@
 
 #include <cmath>
 
+#include "boundary/body_fields.hpp"
+
 namespace geosph {
 
 DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
-    : scene_(scene), fluid_(fluid), no_slip_(scene.walls.slip == "no_slip") {}
+    : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall()) {}
 
 void DummyWalls::allocate(Particles& P) const {
   if (!no_slip_) return;
@@ -23,6 +25,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
         const double volume = std::pow(scene_.dx, scene_.dim);
         // pore water (two-phase): rho is the partial density n rho_w; the wall takes the porosity of its
         // water neighbours and the intrinsic density in the hydrostatic term
+        const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
@@ -52,7 +55,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
               P.rho[w] *= por[w];
             }
             P.m[w] = P.rho[w] * volume;
-            if (no_slip_) {
+            if (no_slip_ && !(slip && slip[w])) {
               wvx[w] = 2.0 * P.vx[w] - svx / sw;
               wvy[w] = 2.0 * P.vy[w] - svy / sw;
               wvz[w] = 2.0 * P.vz[w] - svz / sw;

@@ -153,6 +153,8 @@ Particles build_particles(const Scene& s) {
         }
       }
       P.add(px, py, pz, rho0 * vol, rho0, wall, 0);
+      if (s.mixed_wall_slip())
+        P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = c.slip == "free_slip" ? 1 : 0;
     });
   }
   // Solid blocks of wall particles (a clamp, an obstacle) on the same lattice.
@@ -163,6 +165,8 @@ Particles build_particles(const Scene& s) {
     const double f = smooth_start(0.0, b.ramp);  // a ramped block starts at rest (Simulation::step)
     lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
+      if (s.mixed_wall_slip())
+        P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = s.walls.slip == "free_slip" ? 1 : 0;
       P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
     });

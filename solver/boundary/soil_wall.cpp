@@ -30,7 +30,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
                         P.dim == 3 ? P.field(SoilFields::yz).data() : nullptr};
         const int ncomp = P.dim == 3 ? 6 : 4;
         const double volume = std::pow(scene_.dx, scene_.dim);
-        const double shear_sign = no_slip_ ? 1.0 : -1.0;
+        const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         const std::int32_t* block = P.find_int(BodyFields::wall_block);
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
         const double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
@@ -38,6 +38,8 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
+          const bool no_slip = slip ? slip[w] == 0 : no_slip_;
+          const double shear_sign = no_slip ? 1.0 : -1.0;
           double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;
           std::uint16_t mat = 0;
           bool covered = false;  // the centre lies inside a structure particle's cell: the structure is there
@@ -69,9 +71,9 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
           const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
           const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
-          if (block && block[w] > 0 && no_slip_) {  // clamp: the embedded material does not move
+          if (block && block[w] > 0 && no_slip) {  // clamp: the embedded material does not move
             for (int a = 0; a < 3; ++a) wv[a][w] = vw[a];
-          } else if (no_slip_) {
+          } else if (no_slip) {
             for (int a = 0; a < 3; ++a) wv[a][w] = 2.0 * vw[a] - vs[a];
           } else {
             // free slip: the soil's tangential velocity, its normal velocity mirrored about the wall's,

@@ -1,5 +1,6 @@
 #include "fluid/fluid_forces.hpp"
 
+#include "boundary/body_fields.hpp"
 #include "boundary/dummy_wall.hpp"
 
 #include <algorithm>
@@ -97,6 +98,7 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
   // in WCSPH, so the smaller eta^2 = 1e-4 h^2 only guards against r = 0.
   const double eta2_lam = 1e-4 * h * h;
   const double* wvx = P.find(DummyWallFields::vx);  // no-slip walls only
+  const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
   const double* wvy = P.find(DummyWallFields::vy);
   const double* wvz = P.find(DummyWallFields::vz);
   const double D = repulsive_D_, r0 = repulsive_r0_;
@@ -138,7 +140,7 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
       // (Colagrossi & Landrini 2003, J. Comput. Phys. 191, 448-475, for density jumps)
       double coef = por ? ni * mj * (P.p[i] + P.p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
       const bool wall = kj == Kind::DummyWall;
-      if (!(wall && free_slip_walls_)) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
+      if (!(wall && (slip ? slip[j] != 0 : free_slip_walls_))) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
         double vx = ux, vy = uy, vz = uz;
         if (wall && wvx) { vx = vxi - wvx[j]; vy = vyi - wvy[j]; vz = vzi - wvz[j]; }
         const double vr = vx * dx + vy * dy + vz * dz;

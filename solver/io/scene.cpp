@@ -164,6 +164,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     for (auto& c : w->array_of_objects("containers")) {
       ContainerSpec cs = parse_box(c, d);
       cs.open = c.texts("open", kSides);
+      cs.slip = c.choice("slip", {"no_slip", "free_slip"}, s.walls.slip);
       c.reject_unknown();
       s.walls.containers.push_back(cs);
     }

@@ -53,6 +53,7 @@ struct BodySpec {
 struct ContainerSpec {
   std::array<double, 3> lo{}, hi{};   // the inner (fluid-side) faces of the walls
   std::vector<std::string> open;      // sides without a wall: left right bottom top front back
+  std::string slip;                   // containers: no_slip | free_slip (default: walls.slip)
   std::array<double, 3> velocity{};   // blocks only: prescribed constant velocity (e.g. a footing pushed down)
   double ramp = 0;                    // blocks only: the velocity is reached over `ramp` seconds (smooth start)
 };
@@ -94,6 +95,19 @@ struct Scene {
   std::vector<BodySpec> bodies;
   WallSpec walls;
   bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty(); }
+  // Some container's slip differs from walls.slip: the wall particles carry BodyFields::wall_free_slip.
+  bool mixed_wall_slip() const {
+    for (const auto& c : walls.containers)
+      if (c.slip != walls.slip) return true;
+    return false;
+  }
+  // Any wall is no-slip (walls.slip, blocks, or a container's own).
+  bool any_no_slip_wall() const {
+    if (walls.slip == "no_slip") return true;
+    for (const auto& c : walls.containers)
+      if (c.slip == "no_slip") return true;
+    return false;
+  }
   // The soil (or structure) material called `name`, null if there is none.
   const SoilMaterial* find_soil(const std::string& name) const {
     for (const auto& m : soils)

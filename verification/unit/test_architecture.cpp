@@ -125,3 +125,32 @@ TEST(MaterialList, DrivesTheAcceptedModelsAndTheirMessages) {
 }
 
 }  // namespace
+
+namespace {
+
+// Wall slip per container: the column's box is no-slip (walls.slip), a second container beside it
+// free-slip; its wall particles carry the flag, the others not, and a short run stays finite.
+TEST(WallSlip, SettablePerContainer) {
+  json j = geosph::test::soil_column_scene(0.02);
+  j["domain"]["max"] = {1.0, 0.5};
+  j["walls"]["containers"].push_back({{"min", {0.5, 0}}, {"max", {0.8, 0.3}}, {"open", {"top"}}, {"slip", "free_slip"}});
+  geosph::Simulation sim(geosph::parse_scene(j, "two_boxes.json"));
+  const auto& P = sim.particles();
+  const auto& slip = P.int_field(geosph::BodyFields::wall_free_slip);
+  int free = 0, no_slip = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != geosph::Kind::DummyWall) continue;
+    (P.x[i] > 0.42 ? free : no_slip) += 1;  // first box walls end at 0.35 + 3 dx, the second begin at 0.5 - 3 dx
+    EXPECT_EQ(slip[i], P.x[i] > 0.42 ? 1 : 0) << "wall particle at x = " << P.x[i];
+  }
+  EXPECT_GT(free, 0);
+  EXPECT_GT(no_slip, 0);
+  EXPECT_NO_THROW(sim.run());
+  // without a differing container no flag field is made (a scene pays only for what it declares)
+  geosph::Simulation plain(geosph::parse_scene(geosph::test::soil_column_scene(0.02), "column.json"));
+  EXPECT_FALSE(plain.particles().has_int_field(geosph::BodyFields::wall_free_slip));
+  j["walls"]["containers"][1]["slip"] = "sticky";
+  EXPECT_NE(error_of(j).find("walls.containers[1].slip"), std::string::npos) << error_of(j);
+}
+
+}  // namespace
