@@ -2,6 +2,7 @@
 //   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output
 //   geosph verify [--case NAME] [--level quick|full] --out DIR   run catalogue cases, write result records
 //   geosph info                          version, threads, catalogue
+//   geosph scene-reference [--format markdown|json-schema]   the scene format (docs/scene-reference.md)
 //   geosph stages SCENE.json             the time step's stages for that scene (sim/stages.hpp)
 // Global options (--threads N) go before or after the subcommand. (the case folders found)
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@
 #include "io/hdf5_output.hpp"
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
+#include "io/scene_reference.hpp"
 #include "sim/progress.hpp"
 #include "sim/simulation.hpp"
 
@@ -148,6 +150,10 @@ int main(int argc, char** argv) {
 
   auto* info = app.add_subcommand("info", "version, threads and the verification catalogue");
 
+  auto* ref = app.add_subcommand("scene-reference", "the scene format, from the modules' own declarations");
+  std::string ref_format = "markdown";
+  ref->add_option("--format", ref_format, "markdown or json-schema")->check(CLI::IsMember({"markdown", "json-schema"}));
+
   auto* stages = app.add_subcommand("stages", "the time step's stages for a scene, in order, with the fields each reads and writes");
   std::string stages_scene;
   stages->add_option("scene", stages_scene, "scene file (JSON)")->required();
@@ -157,6 +163,11 @@ int main(int argc, char** argv) {
   try {
     if (*run) return cmd_run(scene_path, out_dir, quiet);
     if (*ver) return cmd_verify(cases, level, vout, vprogress);
+    if (*ref) {
+      if (ref_format == "markdown") std::printf("%s", scene_reference_markdown().c_str());
+      else std::printf("%s\n", scene_reference_schema().dump(2).c_str());
+      return 0;
+    }
     if (*stages) {
       Simulation sim(load_scene(stages_scene));
       std::printf("%s", describe_stages(sim.stages()).c_str());

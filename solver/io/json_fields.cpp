@@ -1,5 +1,7 @@
 #include "io/json_fields.hpp"
 
+#include "io/scene_reference.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -165,11 +167,17 @@ std::vector<std::string> JsonFields::keys() const {
   return k;
 }
 
+void note_scene_field(const std::string& tag, const std::string& key);  // io/scene_reference.cpp
+
 void JsonFields::reject_unknown() const {
+  for (const auto& u : used_) note_scene_field(tag_.empty() ? "(untagged) " + path_ : tag_, u);
   for (auto it = obj_.begin(); it != obj_.end(); ++it) {
     if (!used_.count(it.key())) {
+      std::set<std::string> fields(used_);
+      if (!tag_.empty())
+        for (const auto& k : documented_keys(tag_)) fields.insert(k);
       std::string known;
-      for (const auto& u : used_) known += (known.empty() ? "" : ", ") + u;
+      for (const auto& u : fields) known += (known.empty() ? "" : ", ") + u;
       fail(it.key(), "is not a known field here (known: " + known + ")");
     }
   }

@@ -53,6 +53,9 @@ class JsonFields {
   bool has(const std::string& key) const { return obj_.contains(key); }
   std::vector<std::string> keys() const;
 
+  // Names the section this object is (io/scene_reference.hpp): its documented fields are listed when
+  // an unknown one is found, and the fields read are recorded for the documentation test.
+  const JsonFields& section(std::string tag) const { tag_ = std::move(tag); return *this; }
   // Throws if the object holds a field that no call above asked for.
   void reject_unknown() const;
 
@@ -65,6 +68,7 @@ class JsonFields {
   const nlohmann::json& obj_;
   std::string file_, path_;
   mutable std::set<std::string> used_;
+  mutable std::string tag_;
 };
 
 }  // namespace geosph

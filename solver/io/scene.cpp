@@ -3,14 +3,15 @@
 #include <cmath>
 #include <fstream>
 
+#include "boundary/body_input.hpp"
+#include "boundary/wall_input.hpp"
 #include "io/json_fields.hpp"
+#include "io/scene_reference.hpp"
 #include "materials/model_list.hpp"
 
 namespace geosph {
 
 namespace {
-
-const std::vector<std::string> kSides = {"left", "right", "bottom", "top", "front", "back"};
 
 bool is_solid_material(const Scene& s, const std::string& name) {
   for (const auto& m : s.soils)
@@ -18,15 +19,69 @@ bool is_solid_material(const Scene& s, const std::string& name) {
   return false;
 }
 
-// min/max corners of a box, max > min on every axis
-ContainerSpec parse_box(const JsonFields& f, int dim) {
-  ContainerSpec b;
-  b.lo = f.vector("min", dim);
-  b.hi = f.vector("max", dim);
-  for (int a = 0; a < dim; ++a)
-    if (!(b.hi[a] > b.lo[a])) f.fail("max", "must be greater than min on every axis");
-  return b;
-}
+// The scene's own sections (the top level, kernel, domain, time, output, numerics) for the scene
+// reference; the materials, bodies and walls are declared by the modules that read them.
+const bool documented_top = register_section(
+    {"scene", "(top level)", "One simulation: its resolution, domain, gravity, time, materials, bodies and walls.",
+     {{"name", FieldType::Text, "any", "required", "-", "the scene's name (in outputs and records)"},
+      {"dimension", FieldType::Integer, "2 or 3", "required", "-", "2D (plane strain) or 3D", Range::between(2, 3)},
+      number_doc("dx", Range::positive(), "required", "m", "particle spacing of the lattice"),
+      {"kernel", FieldType::Object, "see kernel", "wendland_c2", "-", "the SPH kernel"},
+      {"domain", FieldType::Object, "see domain", "required", "-", "the box every particle stays in"},
+      {"gravity", FieldType::Vector, "dimension numbers", "[0, 0(, 0)]", "m/s^2", "gravitational acceleration"},
+      {"body_force", FieldType::Vector, "dimension numbers", "[0, 0(, 0)]", "m/s^2",
+       "extra acceleration on every material particle (e.g. a pressure gradient driving a periodic flow)"},
+      {"time", FieldType::Object, "see time", "required", "-", "end time and step control"},
+      {"output", FieldType::Object, "see output", "first and last state", "-", "HDF5 snapshots (geosph run)"},
+      {"numerics", FieldType::Object, "see numerics", "defaults", "-", "sorting, blow-up bound, corrections"},
+      {"materials", FieldType::Object, "name -> material", "required", "-", "the materials by name (see materials)"},
+      {"bodies", FieldType::Objects, "see bodies", "required", "-", "the bodies filled with particles"},
+      {"walls", FieldType::Object, "see walls", "none", "-", "wall particles"}}});
+
+const bool documented_kernel = register_section(
+    {"kernel", "kernel", "The SPH smoothing kernel and its smoothing length h.",
+     {choice_doc("type", {"cubic_spline", "wendland_c2", "quintic_spline"}, "required", "kernel function"),
+      number_doc("h_over_dx", Range::between(0.8, 3.0), "cubic_spline 1.3, wendland_c2 1.6, quintic_spline 1.0", "-", "h / dx")}});
+
+const bool documented_domain = register_section(
+    {"domain", "domain", "The domain box: a particle leaving it stops the run with a diagnosis.",
+     {{"min", FieldType::Vector, "dimension numbers", "required", "m", "lower corner"},
+      {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "upper corner"},
+      {"periodic", FieldType::Texts, "from {x, y, z}", "[]", "-",
+       "periodic axes (length a whole number of dx and at least 3 kernel supports)"}}});
+
+const bool documented_time = register_section(
+    {"time", "time", "End time and the time-step limits (CFL, force and viscous conditions).",
+     {number_doc("end", Range::positive(), "required", "s", "simulated time"),
+      number_doc("cfl", Range{0, 1, true, false}, "0.2", "-", "acoustic (CFL) factor on h / c_max"),
+      number_doc("force_factor", Range{0, 1, true, false}, "0.25", "-", "factor on sqrt(h / a_max)"),
+      number_doc("viscous_factor", Range{0, 0.5, true, false}, "0.125", "-", "factor on h^2 / nu"),
+      {"max_steps", FieldType::Integer, "in [1, 2000000000]", "100000000", "-", "step limit",
+       Range::between(1, 2e9)},
+      number_doc("gravity_ramp", Range::non_negative(), "0", "s", "gravity grows smoothly over this time (<= end)"),
+      number_doc("gravity_ramp_from", Range{0, 1, false, true}, "0", "-",
+                 "fraction of the gravity at t = 0 when ramped (initial states use it)")}});
+
+const bool documented_output = register_section(
+    {"output", "output", "Snapshots written by geosph run (HDF5 + XDMF index).",
+     {number_doc("interval", Range::non_negative(), "0 (first and last state only)", "s", "time between snapshots")}});
+
+const bool documented_numerics = register_section(
+    {"numerics", "numerics", "Numerical settings.",
+     {{"reorder_every", FieldType::Integer, "in [0, 100000]", "20", "-",
+       "steps between sorting particles by cell (0: never)", Range::between(0, 100000)},
+      number_doc("max_density_variation", Range{0, 10, true, false}, "0.5", "-",
+                 "|rho/rho0 - 1| beyond this stops the run as a blow-up"),
+      {"kernel_gradient_correction", FieldType::Boolean, "true, false", "false", "-",
+       "solids: corrected velocity gradient (Bonet & Lok 1999), exact for linear fields at free surfaces"}}});
+
+const bool documented_materials = register_section(
+    {"materials", "materials.<name>", "A material by name; its \"model\" decides the other fields.",
+     {choice_doc("model", [] {
+        std::vector<std::string> m = fluid_model_names();
+        for (const auto& s : solid_model_names()) m.push_back(s);
+        return m;
+      }(), "required", "the constitutive model (its section below: materials:<model> or materials:solid:<model>)")}});
 
 }  // namespace
 
@@ -34,12 +89,14 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   Scene s;
   s.file = file;
   JsonFields top(j, file, "");
+  top.section("scene");
   s.name = top.text("name");
   s.dim = static_cast<int>(top.integer("dimension", 2, 3));
   s.dx = top.number("dx", Range::positive());
   const int d = s.dim;
 
   if (auto k = top.optional_object("kernel")) {
+    k->section("kernel");
     const std::string kname = k->choice("type", {"cubic_spline", "wendland_c2", "quintic_spline"});
     s.kernel = kernel_from_name(kname);
     s.h_over_dx = k->number("h_over_dx", Range::between(0.8, 3.0), default_h_over_dx(s.kernel));
@@ -49,6 +106,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   }
 
   auto dom = top.object("domain");
+  dom.section("domain");
   s.domain.dim = d;
   s.domain.lo = dom.vector("min", d);
   s.domain.hi = dom.vector("max", d);
@@ -64,6 +122,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   s.body_force = top.vector("body_force", d, {0, 0, 0});
 
   auto t = top.object("time");
+  t.section("time");
   s.t_end = t.number("end", Range::positive());
   s.cfl = t.number("cfl", Range{0, 1, true, false}, 0.2);
   s.force_factor = t.number("force_factor", Range{0, 1, true, false}, 0.25);
@@ -74,10 +133,12 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   t.reject_unknown();
 
   if (auto o = top.optional_object("output")) {
+    o->section("output");
     s.output_interval = o->number("interval", Range::non_negative(), 0.0);
     o->reject_unknown();
   }
   if (auto n = top.optional_object("numerics")) {
+    n->section("numerics");
     s.reorder_every = static_cast<int>(n->integer("reorder_every", 0, 100000, 20));
     s.max_density_variation = n->number("max_density_variation", Range{0, 10, true, false}, 0.5);
     s.kernel_gradient_correction = n->boolean("kernel_gradient_correction", false);
@@ -85,99 +146,22 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   }
 
   auto mats = top.object("materials");
+  mats.section("*");  // its keys are names, not fields
   for (const auto& name : mats.keys()) {
     auto m = mats.object(name);
     std::vector<std::string> models = fluid_model_names();
     const std::vector<std::string> solids = solid_model_names();
     models.insert(models.end(), solids.begin(), solids.end());
     const std::string model = m.choice("model", models);
+    m.section(model == "tait_fluid" ? "materials:" + model : "materials:solid:" + model);
     if (model == "tait_fluid") s.materials.push_back(parse_fluid_material(m, name));
     else s.soils.push_back(parse_solid_material(m, name, model));
   }
   if (s.materials.empty() && s.soils.empty()) mats.fail("", "must define at least one material");
   mats.reject_unknown();
 
-  for (auto& b : top.array_of_objects("bodies")) {
-    BodySpec body;
-    body.material = b.text("material");
-    bool is_fluid = false;
-    for (const auto& m : s.materials) is_fluid = is_fluid || m.name == body.material;
-    const SoilMaterial* solid = s.find_soil(body.material);
-    const bool is_soil = solid != nullptr;
-    if (!is_fluid && !is_soil) b.fail("material", "names no material in 'materials' (got \"" + body.material + "\")");
-    body.structure = b.boolean("structure", false);
-    const bool structure_allowed =
-        solid && std::visit([](const auto& m) { return m.structure_allowed; }, solid->model);
-    if (body.structure && !structure_allowed)
-      b.fail("structure", "needs a " +
-                              materials::ModelList<materials::SolidModel>::names_where(
-                                  [](const auto& m) { return m.structure_allowed; }) +
-                              " material; \"" + body.material + "\" is " +
-                              (is_fluid ? std::string("a fluid") : "\"" + solid->model_name() + "\""));
-    b.choice("shape", {"box"});
-    body.lo = b.vector("min", d);
-    body.hi = b.vector("max", d);
-    for (int a = 0; a < d; ++a)
-      if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
-    body.initial = is_fluid         ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
-                   : body.structure ? b.choice("initial", {"rest"}, "rest")
-                                    : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");
-    if (is_soil && b.has("k0")) body.k0 = b.number("k0", Range::open(0, 10));
-    if (body.initial == "isotropic") body.pressure = b.number("pressure", Range::positive());
-    if (solid) std::visit([&](const auto& m) { m.read_body(b, body, body.material); }, solid->model);
-    if (auto sc = b.optional_object("surcharge")) {
-      if (!is_soil || body.structure) b.fail("surcharge", "is only allowed on soil bodies");
-      body.surcharge.pressure = sc->number("pressure", Range::positive());
-      body.surcharge.ramp = sc->number("ramp", Range::non_negative(), 0.0);
-      sc->reject_unknown();
-    }
-    body.velocity = b.vector("velocity", d, {0, 0, 0});
-    body.fixed = b.boolean("fixed", false);
-    if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
-    if (body.structure) {
-      body.interface_friction_angle = b.number("interface_friction_angle", Range{0, 90, false, true}, -1.0);
-      if (auto mo = b.optional_object("motion")) {
-        if (body.fixed) b.fail("motion", "cannot be combined with \"fixed\": true");
-        body.motion.active = true;
-        body.motion.velocity = mo->vector("velocity", d, {0, 0, 0});
-        body.motion.angular_velocity = mo->number("angular_velocity", Range::between(-100, 100), 0.0);
-        if (body.motion.angular_velocity != 0 && d == 3)
-          mo->fail("angular_velocity", "prescribed rotation is implemented in 2D only (about z)");
-        std::array<double, 3> mid{};
-        for (int a = 0; a < d; ++a) mid[a] = 0.5 * (body.lo[a] + body.hi[a]);
-        body.motion.centre = mo->vector("centre", d, mid);
-        body.motion.ramp = mo->number("ramp", Range::non_negative(), 0.0);
-        mo->reject_unknown();
-      }
-    }
-    b.reject_unknown();
-    s.bodies.push_back(body);
-  }
-
-  if (auto w = top.optional_object("walls")) {
-    s.walls.type = w->choice("type", {"dummy", "repulsive"});
-    s.walls.slip = w->choice("slip", {"no_slip", "free_slip"}, "no_slip");
-    s.walls.layers = static_cast<int>(w->integer("layers", 1, 10, 0));
-    s.walls.repulsive_strength = w->number("repulsive_strength", Range::non_negative(), 0.0);
-    if (!w->has("containers") && !w->has("blocks")) w->fail("containers", "is missing: walls need 'containers' or 'blocks'");
-    if (w->has("containers"))
-    for (auto& c : w->array_of_objects("containers")) {
-      ContainerSpec cs = parse_box(c, d);
-      cs.open = c.texts("open", kSides);
-      cs.slip = c.choice("slip", {"no_slip", "free_slip"}, s.walls.slip);
-      c.reject_unknown();
-      s.walls.containers.push_back(cs);
-    }
-    if (w->has("blocks"))
-      for (auto& c : w->array_of_objects("blocks")) {
-        ContainerSpec cs = parse_box(c, d);
-        cs.velocity = c.vector("velocity", d, {0, 0, 0});
-        cs.ramp = c.number("ramp", Range::non_negative(), 0.0);
-        c.reject_unknown();
-        s.walls.blocks.push_back(cs);
-      }
-    w->reject_unknown();
-  }
+  for (auto& b : top.array_of_objects("bodies")) s.bodies.push_back(parse_body(b, s));
+  if (auto w = top.optional_object("walls")) s.walls = parse_walls(*w, d);
   top.reject_unknown();
   validate_scene(s);
   return s;

@@ -7,6 +7,18 @@
 
 namespace geosph::materials {
 
+namespace {
+std::vector<FieldDoc> docs() {
+  auto d = ElasticConstants::docs();
+  for (auto& f : std::vector<FieldDoc>{number_doc("cohesion", Range::non_negative(), "0", "Pa", "Mohr-Coulomb cohesion c"),
+            number_doc("friction_angle", Range{0, 90, false, true}, "required", "deg", "friction angle phi"),
+            number_doc("dilatancy_angle", Range{0, 90, false, true}, "0", "deg", "dilatancy angle psi <= phi")}) d.push_back(f);
+  return d;
+}
+const bool documented = register_section({"materials:solid:drucker_prager", "materials.<name> with \"model\": \"drucker_prager\"",
+                                          "Drucker-Prager, elastic-perfectly plastic, non-associated; the cone matched to Mohr-Coulomb c, phi, psi in plane strain (Bui et al. 2008).", docs()});
+}  // namespace
+
 DruckerPrager DruckerPrager::parse(const JsonFields& f) {
   DruckerPrager m;
   m.elastic = ElasticConstants::parse(f);

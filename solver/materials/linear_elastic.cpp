@@ -11,6 +11,17 @@ ElasticConstants ElasticConstants::parse(const JsonFields& f) {
   return e;
 }
 
+std::vector<FieldDoc> ElasticConstants::docs() {
+  return {number_doc("young_modulus", Range::positive(), "required", "Pa", "Young's modulus E"),
+          number_doc("poisson_ratio", Range::open(-1.0, 0.5), "required", "-", "Poisson's ratio nu")};
+}
+
+namespace {
+const bool documented = register_section({"materials:solid:linear_elastic", "materials.<name> with \"model\": \"linear_elastic\"",
+                                          "Hooke's law with the Jaumann stress rate (structures, elastic skeletons).",
+                                          ElasticConstants::docs()});
+}  // namespace
+
 LinearElastic LinearElastic::parse(const JsonFields& f) {
   LinearElastic m;
   m.elastic = ElasticConstants::parse(f);

@@ -8,6 +8,22 @@
 
 namespace geosph::materials {
 
+namespace {
+const bool documented = register_section(
+    {"materials:solid:modified_cam_clay", "materials.<name> with \"model\": \"modified_cam_clay\"",
+     "Modified Cam Clay (Roscoe & Burland 1968): pressure-dependent elasticity, hardening p_c; needs p' > 0 at start.",
+     {number_doc("poisson_ratio", Range::open(-1.0, 0.5), "required", "-", "constant Poisson's ratio nu"),
+      number_doc("kappa", Range::positive(), "required", "-", "slope of the unloading-reloading lines in v - ln p'"),
+      number_doc("lambda", Range::positive(), "required", "-", "slope of the normal compression line (> kappa)"),
+      number_doc("critical_state_slope", Range::open(0, 3), "required", "-", "M of the critical state line q = M p'"),
+      number_doc("void_ratio", Range::open(0, 20), "required", "-", "e (specific volume v = 1 + e held constant)"),
+      number_doc("min_pressure", Range::positive(), "100", "Pa", "floor on p' in the elastic moduli (free surfaces)")}});
+const bool documented_body = register_section(
+    {"bodies:modified_cam_clay", "bodies[k] of a modified_cam_clay material", "Body fields the Modified Cam Clay model reads.",
+     {number_doc("ocr", Range{1, 1000, false, false}, "1", "-",
+                 "overconsolidation ratio: p_c = OCR x p_c of the yield locus through the initial stress")}});
+}  // namespace
+
 ModifiedCamClay ModifiedCamClay::parse(const JsonFields& f) {
   ModifiedCamClay m;
   m.poisson = f.number("poisson_ratio", Range::open(-1.0, 0.5));

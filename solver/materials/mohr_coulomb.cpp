@@ -7,6 +7,18 @@
 
 namespace geosph::materials {
 
+namespace {
+std::vector<FieldDoc> docs() {
+  auto d = ElasticConstants::docs();
+  for (auto& f : std::vector<FieldDoc>{number_doc("cohesion", Range::non_negative(), "0", "Pa", "Mohr-Coulomb cohesion c"),
+            number_doc("friction_angle", Range{0, 90, false, true}, "required", "deg", "friction angle phi"),
+            number_doc("dilatancy_angle", Range{0, 90, false, true}, "0", "deg", "dilatancy angle psi <= phi")}) d.push_back(f);
+  return d;
+}
+const bool documented = register_section({"materials:solid:mohr_coulomb", "materials.<name> with \"model\": \"mohr_coulomb\"",
+                                          "Mohr-Coulomb, elastic-perfectly plastic, hexagonal surface with edge and apex returns (de Souza Neto et al. 2008, ch. 8); phi = 0 is Tresca.", docs()});
+}  // namespace
+
 MohrCoulomb MohrCoulomb::parse(const JsonFields& f) {
   MohrCoulomb m;
   m.elastic = ElasticConstants::parse(f);

@@ -1,11 +1,32 @@
 #include "materials/solid_material.hpp"
 
 #include "io/json_fields.hpp"
+#include "io/scene_reference.hpp"
 #include "materials/model_list.hpp"
 
 namespace geosph {
 
 using Solids = materials::ModelList<materials::SolidModel>;
+
+namespace {
+const bool documented = register_section(
+    {"materials:solid", "materials.<name> with a solid model", "What every solid (soil or structure) material has.",
+     {number_doc("density", Range::positive(), "required", "kg/m^3",
+                 "density (saturated soil: the skeleton's dry partial density (1 - n0) rho_s)"),
+      number_doc("porosity", Range::open(0, 1), "0 (dry)", "-", "saturated soil: initial porosity n0 (two-phase)"),
+      number_doc("hydraulic_conductivity", Range::positive(), "required with porosity (or grain_size)", "m/s",
+                 "k at n0 (Kozeny-Carman in n)"),
+      number_doc("grain_size", Range::positive(), "instead of hydraulic_conductivity", "m",
+                 "d for Kozeny-Carman's k (constant 180)"),
+      number_doc("artificial_viscosity", Range::between(0, 1), "0.1", "-", "Monaghan alpha (Bui et al. 2008)"),
+      number_doc("artificial_viscosity_beta", Range::between(0, 2), "0", "-", "Monaghan beta"),
+      {"artificial_stress", FieldType::Object, "see materials.artificial_stress", "off", "-",
+       "tensile-instability correction (Gray, Monaghan & Swift 2001)"}}});
+const bool documented_as = register_section(
+    {"materials.artificial_stress", "materials.<name>.artificial_stress", "Artificial stress on tensile principal stresses.",
+     {number_doc("epsilon", Range::between(0, 1), "required", "-", "strength epsilon"),
+      number_doc("exponent", Range::between(1, 10), "4", "-", "n in f_ij = (W_ij / W(dx))^n")}});
+}  // namespace
 
 std::vector<std::string> solid_model_names() { return Solids::names(); }
 
@@ -46,6 +67,7 @@ SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, 
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
   m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
   if (auto a = f.optional_object("artificial_stress")) {
+    a->section("materials.artificial_stress");
     m.artificial_stress = a->number("epsilon", Range::between(0, 1));
     m.artificial_stress_exponent = a->number("exponent", Range::between(1, 10), 4.0);
     a->reject_unknown();

@@ -1,0 +1,79 @@
+#include "boundary/wall_input.hpp"
+
+#include "io/scene_reference.hpp"
+
+namespace geosph {
+
+namespace {
+
+const std::vector<std::string> kSides = {"left", "right", "bottom", "top", "front", "back"};
+
+// min/max corners of a box, max > min on every axis
+ContainerSpec parse_box(const JsonFields& f, int dim) {
+  ContainerSpec b;
+  b.lo = f.vector("min", dim);
+  b.hi = f.vector("max", dim);
+  for (int a = 0; a < dim; ++a)
+    if (!(b.hi[a] > b.lo[a])) f.fail("max", "must be greater than min on every axis");
+  return b;
+}
+
+const bool documented = register_section(
+    {"walls", "walls", "Wall particles: one treatment for all walls, containers and blocks.",
+     {choice_doc("type", {"dummy", "repulsive"}, "required",
+                 "dummy particles with extrapolated pressure/stress (Adami et al. 2012) or repulsive particles "
+                 "(Monaghan 1994, fluids only)"),
+      choice_doc("slip", {"no_slip", "free_slip"}, "no_slip", "wall condition of every wall (a container may set its own)"),
+      {"layers", FieldType::Integer, "in [1, 10]", "enough to cover the kernel support", "-", "wall particle layers",
+       Range::between(1, 10)},
+      number_doc("repulsive_strength", Range::non_negative(), "0.05 c0^2", "m^2/s^2", "repulsive walls: D"),
+      {"containers", FieldType::Objects, "see walls.containers", "required without blocks", "-", "boxes walled on their faces"},
+      {"blocks", FieldType::Objects, "see walls.blocks", "none", "-", "solid boxes of wall particles"}}});
+
+const bool documented_containers = register_section(
+    {"walls.containers", "walls.containers[k]", "A box whose faces (but the open ones) are walls; min/max are the inner faces.",
+     {{"min", FieldType::Vector, "dimension numbers", "required", "m", "inner lower corner"},
+      {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "inner upper corner"},
+      {"open", FieldType::Texts, "from {left, right, bottom, top, front, back}", "[]", "-", "sides without a wall"},
+      choice_doc("slip", {"no_slip", "free_slip"}, "walls.slip", "this container's wall condition")}});
+
+const bool documented_blocks = register_section(
+    {"walls.blocks", "walls.blocks[k]", "A solid box of wall particles (a clamp, a footing, a piston), optionally moving.",
+     {{"min", FieldType::Vector, "dimension numbers", "required", "m", "lower corner"},
+      {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "upper corner"},
+      {"velocity", FieldType::Vector, "dimension numbers", "[0, 0(, 0)]", "m/s", "prescribed constant velocity"},
+      number_doc("ramp", Range::non_negative(), "0", "s", "the velocity is reached over ramp (smooth start)")}});
+
+}  // namespace
+
+WallSpec parse_walls(const JsonFields& w, int dim) {
+  w.section("walls");
+  WallSpec walls;
+  walls.type = w.choice("type", {"dummy", "repulsive"});
+  walls.slip = w.choice("slip", {"no_slip", "free_slip"}, "no_slip");
+  walls.layers = static_cast<int>(w.integer("layers", 1, 10, 0));
+  walls.repulsive_strength = w.number("repulsive_strength", Range::non_negative(), 0.0);
+  if (!w.has("containers") && !w.has("blocks")) w.fail("containers", "is missing: walls need 'containers' or 'blocks'");
+  if (w.has("containers"))
+    for (auto& c : w.array_of_objects("containers")) {
+      c.section("walls.containers");
+      ContainerSpec cs = parse_box(c, dim);
+      cs.open = c.texts("open", kSides);
+      cs.slip = c.choice("slip", {"no_slip", "free_slip"}, walls.slip);
+      c.reject_unknown();
+      walls.containers.push_back(cs);
+    }
+  if (w.has("blocks"))
+    for (auto& c : w.array_of_objects("blocks")) {
+      c.section("walls.blocks");
+      ContainerSpec cs = parse_box(c, dim);
+      cs.velocity = c.vector("velocity", dim, {0, 0, 0});
+      cs.ramp = c.number("ramp", Range::non_negative(), 0.0);
+      c.reject_unknown();
+      walls.blocks.push_back(cs);
+    }
+  w.reject_unknown();
+  return walls;
+}
+
+}  // namespace geosph
