@@ -1,33 +1,23 @@
 #include "materials/drucker_prager.hpp"
 
 #include <numbers>
-#include <string>
 
-#include "io/json_fields.hpp"
+#include "io/scene_reference.hpp"
 
 namespace geosph::materials {
 
 namespace {
-std::vector<FieldDoc> docs() {
-  auto d = ElasticConstants::docs();
-  for (auto& f : std::vector<FieldDoc>{number_doc("cohesion", Range::non_negative(), "0", "Pa", "Mohr-Coulomb cohesion c"),
-            number_doc("friction_angle", Range{0, 90, false, true}, "required", "deg", "friction angle phi"),
-            number_doc("dilatancy_angle", Range{0, 90, false, true}, "0", "deg", "dilatancy angle psi <= phi")}) d.push_back(f);
-  return d;
-}
-const bool documented = register_section({"materials:solid:drucker_prager", "materials.<name> with \"model\": \"drucker_prager\"",
-                                          "Drucker-Prager, elastic-perfectly plastic, non-associated; the cone matched to Mohr-Coulomb c, phi, psi in plane strain (Bui et al. 2008).", docs()});
+const bool documented = register_section(
+    {"materials:solid:drucker_prager", "materials.<name> with \"model\": \"drucker_prager\"",
+     "Drucker-Prager, elastic-perfectly plastic, non-associated; the cone matched to Mohr-Coulomb c, phi, psi in "
+     "plane strain (Bui et al. 2008).",
+     FrictionalStrength::docs_with_elastic()});
 }  // namespace
 
 DruckerPrager DruckerPrager::parse(const JsonFields& f) {
   DruckerPrager m;
   m.elastic = ElasticConstants::parse(f);
-  m.cohesion = f.number("cohesion", Range::non_negative(), 0.0);
-  m.friction_angle = f.number("friction_angle", Range{0, 90, false, true});
-  m.dilatancy_angle = f.number("dilatancy_angle", Range{0, 90, false, true}, 0.0);
-  if (m.dilatancy_angle > m.friction_angle)
-    f.fail("dilatancy_angle", "must not exceed friction_angle (" + std::to_string(m.friction_angle) + " deg), got " +
-                                  std::to_string(m.dilatancy_angle));
+  static_cast<FrictionalStrength&>(m) = FrictionalStrength::parse(f);
   constexpr double deg = std::numbers::pi / 180.0;
   m.point_ = soil::DruckerPrager({m.elastic.young, m.elastic.poisson, m.cohesion, m.friction_angle * deg,
                                   m.dilatancy_angle * deg});

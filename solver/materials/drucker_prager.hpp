@@ -2,25 +2,22 @@
 // c, phi, psi in plane strain (Bui et al. 2008; the return mapping is soil/drucker_prager.hpp).
 #pragma once
 #include "materials/elastic_constants.hpp"
+#include "materials/frictional_strength.hpp"
 #include "materials/solid_model.hpp"
 #include "soil/drucker_prager.hpp"
 
 namespace geosph::materials {
 
-struct DruckerPrager : SolidModelDefaults {
+struct DruckerPrager : SolidModelDefaults, FrictionalStrength {
   static constexpr std::string_view name = "drucker_prager";
   ElasticConstants elastic;
-  double cohesion = 0;         // c [Pa]
-  double friction_angle = 0;   // phi [deg], in [0, 90)
-  double dilatancy_angle = 0;  // psi [deg], in [0, phi]
 
   static DruckerPrager parse(const JsonFields& f);
   double poisson_ratio() const { return elastic.poisson; }
   double wave_speed(double /*p*/, double density) const { return elastic.wave_speed(density); }
   SolidUpdate update(const Matrix3d& sigma, const Matrix3d& de, const Matrix3d& dw, const SolidState&,
                      std::size_t) const {
-    const auto r = point_.update(sigma, de, dw);
-    return {r.stress, r.equivalent_plastic_strain_increment, true};
+    return perfectly_plastic_update(point_, sigma, de, dw);
   }
   const soil::DruckerPrager& point_model() const { return point_; }
 

@@ -2,6 +2,7 @@
 // sqrt(J2) <= k = yield_stress / sqrt(3) (uniaxial yield stress sigma_y).
 #pragma once
 #include "materials/elastic_constants.hpp"
+#include "materials/frictional_strength.hpp"
 #include "materials/solid_model.hpp"
 #include "soil/drucker_prager.hpp"
 
@@ -19,8 +20,7 @@ struct VonMises : SolidModelDefaults {
   double wave_speed(double /*p*/, double density) const { return elastic.wave_speed(density); }
   SolidUpdate update(const Matrix3d& sigma, const Matrix3d& de, const Matrix3d& dw, const SolidState&,
                      std::size_t) const {
-    const auto r = point_.update(sigma, de, dw);
-    return {r.stress, r.equivalent_plastic_strain_increment, true};
+    return perfectly_plastic_update(point_, sigma, de, dw);
   }
 
  private:

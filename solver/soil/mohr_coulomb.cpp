@@ -16,20 +16,7 @@ namespace geosph::soil {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-[[noreturn]] void reject(const std::string& field, const std::string& range, double value,
-                         bool in_degrees = false) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << field << " must be " << range << ", got ";
-  if (in_degrees)
-    msg << value * kDeg << " degrees";
-  else
-    msg << value;
-  throw std::invalid_argument(msg.str());
-}
 
 // Principal stresses sigma_1 >= sigma_2 >= sigma_3 and their eigenvectors (columns, same order).
 // compute() (tridiagonalisation + implicit QR) rather than computeDirect(): the closed-form 3x3
@@ -57,21 +44,12 @@ bool ordered(const Vec3& s) { return s(0) >= s(1) && s(1) >= s(2); }
 
 }  // namespace
 
+// The elastic constants and the c, phi, psi ranges are Drucker-Prager's (the same parameters);
+// Mohr-Coulomb adds that c = 0 with phi = 0 has no strength at all.
 void validate(const MohrCoulombParams& p) {
-  // Comparisons are written so that NaN fails them.
-  if (!(p.young > 0.0) || !std::isfinite(p.young)) reject("young", "> 0 (Young's modulus, Pa)", p.young);
-  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
-  if (!(p.cohesion >= 0.0) || !std::isfinite(p.cohesion)) reject("cohesion", ">= 0 (Pa)", p.cohesion);
-  if (!(p.friction_angle >= 0.0 && p.friction_angle < 0.5 * std::numbers::pi))
-    reject("friction_angle", "in [0, 90) degrees", p.friction_angle, true);
-  if (!(p.dilatancy_angle >= 0.0 && p.dilatancy_angle <= p.friction_angle)) {
-    std::ostringstream range;
-    range.precision(10);
-    range << "in [0, friction_angle] = [0, " << p.friction_angle * kDeg << "] degrees";
-    reject("dilatancy_angle", range.str(), p.dilatancy_angle, true);
-  }
+  validate(DruckerPragerParams{p.young, p.poisson, p.cohesion, p.friction_angle, p.dilatancy_angle});
   if (p.cohesion == 0.0 && p.friction_angle == 0.0)
-    reject("cohesion", "> 0 when friction_angle = 0 (the material would have no strength)", p.cohesion);
+    throw std::invalid_argument("cohesion must be > 0 when friction_angle = 0 (the material would have no strength), got 0");
 }
 
 MohrCoulomb::MohrCoulomb(const MohrCoulombParams& params) : params_(params) {
