@@ -3,8 +3,8 @@
 # report-generator tests and the verification catalogue at its quick level). Heavier studies
 # carry the ctest label `convergence` and are excluded here; run them with
 #   ctest --test-dir build -L convergence
-# Catalogue cases that fail today, each tracked by an open issue, carry the label `open` (listed in
-# verification/CMakeLists.txt and the README); the main job (ci/run-catalogue.sh) still runs them
+# Catalogue cases that fail today, each tracked by an open issue, carry the label `open` (in their
+# case.json "labels"; listed in the README); the main job (ci/run-catalogue.sh) still runs them
 # and the report marks them failing. Run them with
 #   ctest --test-dir build -L open
 set -euo pipefail
