@@ -41,7 +41,7 @@ class FluidForces {
  private:
   template <class K>
   void continuity_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
-  template <class K>
+  template <bool MixedSlip, class K>
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
   // porosity of the pore water (two-phase scenes, coupling/seepage.hpp), else null

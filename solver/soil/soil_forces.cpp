@@ -107,8 +107,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
   const double* wvy = P.find(SoilWallFields::vy);
   const double* wvz = P.find(SoilWallFields::vz);
-  const double* wm = P.find(SoilWallFields::m);
-  const double* wrho = P.find(SoilWallFields::rho);
+  gather_soil_view(P);
+  const double* mass = mass_.data();
+  const double* dens = rho_.data();
   const std::vector<materials::SolidState> states = bind_states(P);
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
@@ -126,7 +127,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       const double fw = kernel.gradW_over_r(std::sqrt(r2));
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
       const bool wall = kj == Kind::DummyWall;
-      const double mj = wall ? wm[j] : P.m[j], Vj = mj / (wall ? wrho[j] : P.rho[j]);
+      const double mj = mass[j], Vj = mj / dens[j];
       // continuity with the wall's own (prescribed) velocity
       drho += mj * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
       double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
@@ -202,18 +203,30 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   if (has_pressure_dependent_) update_wave_speeds(P);
 }
 
+void SoilForces::gather_soil_view(const Particles& P) const {
+  const std::size_t n = P.size();
+  mass_.resize(n);
+  rho_.resize(n);
+  const double* wm = P.find(SoilWallFields::m);
+  const double* wrho = P.find(SoilWallFields::rho);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool ghost = wm && P.kind[i] == Kind::DummyWall;
+    mass_[i] = ghost ? wm[i] : P.m[i];
+    rho_[i] = ghost ? wrho[i] : P.rho[i];
+  }
+}
+
 void SoilForces::prepare_pair_terms(Particles& P) const {
   const std::size_t n = P.size();
   S_.resize(n);
   R_.resize(n);
   const StressView sv(P);
-  const double* wrho = P.find(SoilWallFields::rho);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_solid(P.kind[i]) && P.kind[i] != Kind::DummyWall) continue;
     const Eigen::Matrix3d s = sv.get(i);
-    const double rho = P.kind[i] == Kind::DummyWall ? wrho[i] : P.rho[i];
-    const double inv_r2 = 1.0 / (rho * rho);
+    const double inv_r2 = 1.0 / (rho_[i] * rho_[i]);
     S_[i] = {s(0, 0) * inv_r2, s(1, 1) * inv_r2, s(2, 2) * inv_r2, s(0, 1) * inv_r2, s(0, 2) * inv_r2, s(1, 2) * inv_r2};
     // Artificial stress (Gray, Monaghan & Swift 2001, eqs. 3.2-3.5): in the principal frame,
     // R'_a = -eps sigma'_a / rho^2 where sigma'_a > 0 (tension), else 0; rotated back.
@@ -236,15 +249,16 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
 template <class K>
 void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& cells,
                                const std::array<double, 3>& g) const {
-  prepare_pair_terms(P);
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   const double w_dx = kernel.W(scene_.dx);
   const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
   const double* wvy = P.find(SoilWallFields::vy);
   const double* wvz = P.find(SoilWallFields::vz);
-  const double* wm = P.find(SoilWallFields::m);
-  const double* wrho = P.find(SoilWallFields::rho);
+  gather_soil_view(P);
+  prepare_pair_terms(P);
+  const double* mass = mass_.data();
+  const double* dens = rho_.data();
   const double* cw = has_pressure_dependent_ ? P.field(SoilFields::wave_speed).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
@@ -267,7 +281,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
       const double fw = kernel.gradW_over_r(r);
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
       const bool wall = kj == Kind::DummyWall;
-      const double mj = wall ? wm[j] : P.m[j], rhoj = wall ? wrho[j] : P.rho[j];
+      const double mj = mass[j], rhoj = dens[j];
       const auto& Sj = S_[j];
       double T[6];
       for (int c = 0; c < 6; ++c) T[c] = Si[c] + Sj[c];
