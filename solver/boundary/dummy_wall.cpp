@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "boundary/body_fields.hpp"
+#include "coupling/seepage_fields.hpp"
 
 namespace geosph {
 
@@ -26,7 +27,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
         // pore water (two-phase): rho is the partial density n rho_w; the wall takes the porosity of its
         // water neighbours and the intrinsic density in the hydrostatic term
         const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
-        double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
+        double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;

@@ -1,6 +1,7 @@
 #include "boundary/soil_wall.hpp"
 
 #include "boundary/body_fields.hpp"
+#include "coupling/seepage_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +34,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         const std::int32_t* block = P.find_int(BodyFields::wall_block);
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
-        const double* por = scene_.two_phase() ? P.field("porosity").data() : nullptr;  // SeepageFields::porosity
+        const double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
         const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {

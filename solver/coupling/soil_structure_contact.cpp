@@ -108,11 +108,10 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
 std::array<double, 3> SoilStructureContact::body_force(const Particles& P, std::size_t body) {
   std::array<double, 3> F{0, 0, 0};
   if (!P.has_field(ContactFields::fx)) return F;
-  const auto& fields = P.extra_fields();
-  const auto& b = fields.at("structure_body");
-  const auto& fx = fields.at(ContactFields::fx);
-  const auto& fy = fields.at(ContactFields::fy);
-  const auto& fz = fields.at(ContactFields::fz);
+  const auto& b = P.int_field(BodyFields::structure_body);
+  const auto& fx = P.field(ContactFields::fx);
+  const auto& fy = P.field(ContactFields::fy);
+  const auto& fz = P.field(ContactFields::fz);
   for (std::size_t j = 0; j < P.size(); ++j)
     if (static_cast<std::size_t>(b[j]) == body + 1) { F[0] += fx[j]; F[1] += fy[j]; F[2] += fz[j]; }
   return F;

@@ -2,6 +2,7 @@
 
 #include "boundary/body_fields.hpp"
 #include "boundary/dummy_wall.hpp"
+#include "coupling/seepage_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,7 @@ void FluidForces::update_pressure(Particles& P) const {
 
 const double* FluidForces::porosity(const Particles& P) const {
   if (!scene_.two_phase()) return nullptr;
-  return P.field("porosity").data();  // SeepageFields::porosity
+  return P.field(SeepageFields::porosity).data();
 }
 
 void FluidForces::continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "coupling/seepage_fields.hpp"
+
 namespace geosph {
 
 std::string Diagnosis::message() const {
@@ -18,7 +20,7 @@ StateSummary check_state(const Particles& P, const Box& domain, const StateBound
   double v2max = 0, a2max = 0;
   long bad = -1;
   // pore water (two-phase): rho is the partial density n rho_w, judged by its intrinsic density
-  const double* por = P.find("porosity");  // SeepageFields::porosity (two-phase scenes)
+  const double* por = P.find(SeepageFields::porosity);  // two-phase scenes
   auto density_ratio = [&](std::size_t i, const PhaseBounds& b) {
     const double r = P.rho[i] / b.rho0[P.material[i]];
     return por && P.kind[i] == Kind::Fluid ? r / por[i] : r;
