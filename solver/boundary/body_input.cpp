@@ -64,7 +64,7 @@ BodySpec parse_body(const JsonFields& b, const Scene& s) {
                             materials::ModelList<materials::SolidModel>::names_where(
                                 [](const auto& m) { return m.structure_allowed; }) +
                             " material; \"" + body.material + "\" is " +
-                            (is_fluid ? std::string("a fluid") : "\"" + solid->model_name() + "\""));
+                            (is_fluid ? std::string("a fluid") : std::string(1, '"').append(solid->model_name()).append(1, '"')));
   b.choice("shape", {"box"});
   body.lo = b.vector("min", d);
   body.hi = b.vector("max", d);

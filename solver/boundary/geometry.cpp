@@ -71,8 +71,7 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
     }
     std::visit([&](const auto& model) {  // the model's own state (e.g. Modified Cam Clay's p_c)
       if (model.state_fields.empty()) return;
-      materials::SolidState st;
-      for (std::size_t f = 0; f < model.state_fields.size(); ++f) st.f[f] = P.add_field(model.state_fields[f], SoilFields::owner).data();
+      const materials::SolidState st = m.bind_state(P);
       const auto stress = [&](const char* f) { const double* s = P.find(f); return s ? s[i] : 0.0; };
       const Eigen::Matrix3d sigma =
           Eigen::Vector3d(stress(SoilFields::xx), stress(SoilFields::yy), stress(SoilFields::zz)).asDiagonal();

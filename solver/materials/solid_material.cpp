@@ -1,8 +1,10 @@
 #include "materials/solid_material.hpp"
 
+#include "core/particles.hpp"
 #include "io/json_fields.hpp"
 #include "io/scene_reference.hpp"
 #include "materials/model_list.hpp"
+#include "soil/soil_fields.hpp"
 
 namespace geosph {
 
@@ -29,6 +31,14 @@ const bool documented_as = register_section(
 }  // namespace
 
 std::vector<std::string> solid_model_names() { return Solids::names(); }
+
+materials::SolidState SoilMaterial::bind_state(Particles& P) const {
+  materials::SolidState st;
+  std::visit([&](const auto& m) {
+    for (std::size_t f = 0; f < m.state_fields.size(); ++f) st.f[f] = P.add_field(m.state_fields[f], SoilFields::owner).data();
+  }, model);
+  return st;
+}
 
 std::string SoilMaterial::model_name() const {
   return std::visit([](const auto& m) { return std::string(m.name); }, model);

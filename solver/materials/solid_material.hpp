@@ -12,6 +12,7 @@
 namespace geosph {
 
 class JsonFields;
+struct Particles;
 
 struct SoilMaterial {
   std::string name;
@@ -31,6 +32,8 @@ struct SoilMaterial {
   double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
 
   std::string model_name() const;
+  // The model's state fields in P (created, owned by the soil module, if not there yet).
+  materials::SolidState bind_state(Particles& P) const;
   double poisson_ratio() const;
   bool pressure_dependent() const;  // wave speed changes with p' (per-particle speeds)
   // P-wave speed at zero mean stress for pressure-dependent models; the constant one otherwise.

@@ -100,6 +100,11 @@ std::vector<Stage> Simulation::stage_table() {
     if (present) t.push_back(std::move(st));
   };
   const bool surcharge = P_.has_field(BodyFields::surcharge);
+  const auto soil_walls = [this](Hook h) {  // the same stage in two hooks (rates: two-phase only)
+    return Stage{"soil_walls", h, {"x", "v", "stress[soil]", "rho[soil]"},
+                 {"stress[walls]", "soil_wall_v*", "soil_wall_density", "soil_wall_mass"}, {},
+                 [this] { soil_walls_->update(P_, cells_, gravity_at(t_)); }};
+  };
   // drift
   add(rigid_ != nullptr, {"rigid_motion", Hook::Drift, {"t"}, {"x[rigid]", "v[rigid]"}, {},
                           [this] { rigid_->advance(P_, t_, dt_); }});
@@ -108,9 +113,7 @@ std::vector<Stage> Simulation::stage_table() {
                           {"drho[fluid]"}, {}, [this] { fluid_->continuity(P_, cells_, gravity_at(t_)); }});
   add(seepage_ != nullptr, {"seepage_porosity_rate", Hook::Rates, {"x", "v", "porosity"}, {"porosity_rate"}, {},
                             [this] { seepage_->porosity_rate(P_, cells_); }});
-  add(seepage_ && soil_walls_, {"soil_walls", Hook::Rates, {"x", "v", "stress[soil]", "rho[soil]"},
-                                {"stress[walls]", "soil_wall_v*", "soil_wall_density", "soil_wall_mass"}, {},
-                                [this] { soil_walls_->update(P_, cells_, gravity_at(t_)); }});
+  add(seepage_ && soil_walls_, soil_walls(Hook::Rates));
   add(soil_ != nullptr, {"solid_stress", Hook::Rates, {"x", "v", "stress", "soil_wall_*", "model state"},
                          {"drho[solid]", "stress[solid]", "p[solid]", "plastic_strain", "model state", "wave_speed"}, {},
                          [this] { soil_->update_stress(P_, cells_, dt_, step_, t_); }});
@@ -122,9 +125,7 @@ std::vector<Stage> Simulation::stage_table() {
   add(seepage_ != nullptr, {"seepage_skeleton_porosity", Hook::Forces, {"x", "rho", "m", "porosity", "soil_wall_*"},
                             {"porosity[soil]", "hydraulic_conductivity", "kernel sums"}, {},
                             [this] { seepage_->update_porosity(P_, cells_); }});
-  add(soil_walls_ != nullptr, {"soil_walls", Hook::Forces, {"x", "v", "stress[soil]", "rho[soil]"},
-                               {"stress[walls]", "soil_wall_v*", "soil_wall_density", "soil_wall_mass"}, {},
-                               [this] { soil_walls_->update(P_, cells_, gravity_at(t_)); }});
+  add(soil_walls_ != nullptr, soil_walls(Hook::Forces));
   add(soil_ != nullptr, {"solid_momentum", Hook::Forces, {"x", "v", "rho", "m", "stress", "soil_wall_*"},
                          {"a[solid]"}, {}, [this] { soil_->momentum(P_, cells_, gravity_at(t_)); }});
   add(fluid_ != nullptr, {"fluid_pressure", Hook::Forces, {"rho[fluid]", "porosity"}, {"p[fluid]"}, {},

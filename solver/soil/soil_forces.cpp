@@ -64,10 +64,7 @@ void SoilForces::allocate(Particles& P) const {
 
 std::vector<materials::SolidState> SoilForces::bind_states(Particles& P) const {
   std::vector<materials::SolidState> states(scene_.soils.size());
-  for (std::size_t k = 0; k < scene_.soils.size(); ++k)
-    std::visit([&](const auto& model) {
-      for (std::size_t f = 0; f < model.state_fields.size(); ++f) states[k].f[f] = P.field(model.state_fields[f]).data();
-    }, scene_.soils[k].model);
+  for (std::size_t k = 0; k < scene_.soils.size(); ++k) states[k] = scene_.soils[k].bind_state(P);
   return states;
 }
 
