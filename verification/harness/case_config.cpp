@@ -4,18 +4,9 @@
 #include <fstream>
 
 #include "io/json_fields.hpp"
+#include "io/json_file.hpp"
 
 namespace geosph::verify {
-
-nlohmann::json read_json_file(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  if (!in) throw InputError(p.string() + ": cannot open");
-  try {
-    return nlohmann::json::parse(in, nullptr, true, true);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(p.string() + ": not valid JSON: " + e.what());
-  }
-}
 
 std::filesystem::path default_data_dir() {
   if (const char* env = std::getenv("GEOSPH_DATA_DIR")) return env;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_file.hpp"
 #include "io/scene.hpp"
 
 namespace geosph::verify {
@@ -43,7 +44,6 @@ struct CaseConfig {
 
 CaseConfig load_case(const CaseContext& ctx, const std::string& name);
 // A JSON file (comments allowed); InputError naming the file if it cannot be read or parsed.
-nlohmann::json read_json_file(const std::filesystem::path& p);
 std::filesystem::path default_data_dir();
 
 }  // namespace geosph::verify

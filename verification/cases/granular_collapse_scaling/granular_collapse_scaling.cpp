@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 
 #include "harness/case_record.hpp"
@@ -219,8 +218,7 @@ std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, co
 
 std::vector<Record> run_granular_collapse_scaling(const CaseContext& ctx, const std::string& case_name) {
   const CaseConfig cfg = load_case(ctx, case_name);
-  std::ifstream lf(cfg.reference_file(ctx, cfg.spec.at("laws")));
-  const nlohmann::json laws = nlohmann::json::parse(lf);
+  const nlohmann::json laws = read_json_file(cfg.reference_file(ctx, cfg.spec.at("laws")));
   std::vector<Record> out;
   for (double dx : cfg.level_numbers("dx")) {
     auto recs = scaling_at(cfg, ctx, laws, dx);
