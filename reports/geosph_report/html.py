@@ -72,9 +72,19 @@ METRIC_HEADERS = ["case", "level", "variant", "metric", "value", "tolerance", "w
 RUN_HEADERS = ["particles", "dx", "steps", "wall [s]", "particle-steps/s", "threads"]
 
 
+def provenance_line(records):
+    """Which builds produced the records (solver version, compiler, flags): one line per build."""
+    builds = sorted({(p.get("solver_version", "?"), p.get("compiler", "?"), p.get("build_flags", "?"))
+                     for p in (r.provenance for r in records) if p})
+    if not builds:
+        return '<p class="muted">The records carry no provenance (written before GeoSPH recorded it).</p>'
+    items = "".join(f"<li>GeoSPH {escape(v)}, {escape(c)}, <code>{escape(f)}</code></li>" for v, c, f in builds)
+    return f"<p>Built by:</p><ul>{items}</ul>"
+
+
 def summary_section(records):
     rows, classes = _metric_rows(records)
-    return table(METRIC_HEADERS + RUN_HEADERS, rows, classes)
+    return provenance_line(records) + table(METRIC_HEADERS + RUN_HEADERS, rows, classes)
 
 
 def cases_section(records, out):

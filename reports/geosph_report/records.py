@@ -45,6 +45,7 @@ class Record:
     snapshot: dict = None
     relpath: str = None  # path relative to the results directory, for display
     scored: bool = True  # False: a study run (e.g. a stabilisation switched off), reported, not judged
+    provenance: dict = None  # solver_version, compiler, build_flags, threads, scene_hash
 
     @property
     def passed(self):
@@ -176,6 +177,7 @@ def parse_record(obj, path="<record>"):
                 enumerate(c.get(obj, "series", "list", required=False) or [])],
         snapshot=_snapshot(c, c.get(obj, "snapshot", "object", required=False)),
         scored=c.get(obj, "scored", "boolean", required=False) is not False,
+        provenance=c.get(obj, "provenance", "object", required=False),
     )
     if rec.level not in LEVELS:
         c.fail(f"field 'level' must be one of {', '.join(LEVELS)}, got {rec.level!r}")

@@ -19,7 +19,9 @@ def base(case, dx, **kw):
            "metrics": [{"name": "rel_l2", "value": 0.01, "tolerance": 0.05, "passed": True,
                         "why_tolerance": "synthetic"}],
            "steps": int(100 / dx), "wall_s": 0.5 / dx ** 1.5, "particle_steps_per_s": 5e6,
-           "threads": 2, "stable": True, "options": {"kernel": "wendland_c2", "boundary": "dummy"}}
+           "threads": 2, "stable": True, "options": {"kernel": "wendland_c2", "boundary": "dummy"},
+           "provenance": {"solver_version": "0.1.0 (git synthetic)", "compiler": "GNU 12.2.0",
+                          "build_flags": "Release: -O3", "threads": 2, "scene_hash": "0123456789abcdef"}}
     rec.update(kw)
     return rec
 

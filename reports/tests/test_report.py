@@ -46,6 +46,10 @@ class ReportTest(unittest.TestCase):
         self.assertIn("9 passed", self.html)
         self.assertIn("3 failed", self.html)
 
+    def test_provenance_shown(self):
+        summary = self.html.split('<section id="summary">')[1].split("</section>")[0]
+        self.assertIn("GeoSPH 0.1.0 (git synthetic), GNU 12.2.0, <code>Release: -O3</code>", summary)
+
     def test_figures_exist_and_are_linked_relatively(self):
         pngs = re.findall(r'<img src="([^"]+)"', self.html)
         self.assertTrue(any(p.startswith("conv_poiseuille") for p in pngs))

@@ -1,5 +1,6 @@
 // The `geosph` command:
-//   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output
+//   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output, checkpoints
+//   geosph run SCENE.json --out DIR --restart DIR|CHECKPOINT   continue an interrupted run
 //   geosph verify [--case NAME] [--level quick|full] --out DIR   run catalogue cases, write result records
 //   geosph info                          version, threads, catalogue
 //   geosph scene-reference [--format markdown|json-schema]   the scene format (docs/scene-reference.md)
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,7 @@
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
 #include "io/scene_reference.hpp"
+#include "sim/checkpoint.hpp"
 #include "sim/progress.hpp"
 #include "sim/simulation.hpp"
 
@@ -28,19 +31,97 @@ using namespace geosph;
 
 namespace {
 
-int cmd_run(const std::string& scene_path, const std::string& out_dir, bool quiet) {
-  // Everything that can be wrong with the input is found before the output directory exists.
-  Scene scene = load_scene(scene_path);
+// The files a run writes into its output directory (io/hdf5_output.hpp, this file).
+bool is_run_output(const fs::path& p) {
+  const std::string f = p.filename().string();
+  return f == "particles.xdmf" || f == "summary.json" || f == "diagnosis.txt" || f == "checkpoints" ||
+         (f.rfind("particles_", 0) == 0 && (p.extension() == ".h5" || p.extension() == ".tmp"));
+}
+
+// An output directory that holds anything is refused (an earlier run's snapshots would mix with this
+// run's); with --overwrite the files an earlier run wrote are removed first, other files are kept.
+void prepare_output_dir(const fs::path& dir, bool overwrite) {
+  if (!fs::exists(dir)) return;
+  if (!fs::is_directory(dir)) throw InputError("--out " + dir.string() + ": exists and is not a directory");
+  std::vector<fs::path> ours, others;
+  for (const auto& e : fs::directory_iterator(dir)) (is_run_output(e.path()) ? ours : others).push_back(e.path());
+  if (ours.empty() && others.empty()) return;
+  if (!overwrite)
+    throw InputError("--out " + dir.string() + ": the directory exists and is not empty (" +
+                     std::to_string(ours.size() + others.size()) +
+                     " entries); choose a new directory, or pass --overwrite to replace an earlier run's output");
+  if (!others.empty() && ours.empty())
+    throw InputError("--out " + dir.string() + ": --overwrite replaces an earlier run's output, but this directory "
+                     "holds no GeoSPH output (first entry: " + others.front().filename().string() + ")");
+  for (const auto& p : ours) fs::remove_all(p);
+}
+
+// SIGINT/SIGTERM: the run stops after the current step, writes a checkpoint and exits with
+// kExitInterrupted; a second signal ends the process at once (the default action).
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+  std::signal(sig, SIG_DFL);
+}
+
+// Exit codes of `geosph run` (README): 0 done, 2 bad input, 3 unstable (diagnosis.txt), 4 interrupted
+// with a checkpoint to restart from.
+constexpr int kExitInterrupted = 4;
+
+struct RunOptions {
+  std::string scene, out, restart;
+  bool quiet = false, overwrite = false;
+  RunLimits limits;
+  long checkpoint_every = 0;        // steps; 0: off
+  double checkpoint_wall = 1800;    // wall seconds between checkpoints; 0: off
+  int checkpoint_keep = 2;
+  long stop_after = 0;              // stop (as interrupted) after this step; 0: off
+};
+
+int cmd_run(const RunOptions& o) {
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  // Everything that can be wrong with the input is found before the output directory is touched.
+  Scene scene = load_scene(o.scene);
+  scene.limits = o.limits;
   Simulation sim(scene);
-  Hdf5Output out(out_dir);
+  const Provenance prov = provenance(scene.hash);
+  double next_out = scene.output_interval > 0 ? scene.output_interval : 1e300;
+  nlohmann::json stored_output;
+  fs::path restarted_from;
+  if (!o.restart.empty()) {
+    restarted_from = find_checkpoint(o.restart);
+    stored_output = restore_checkpoint(restarted_from, sim);
+    for (const auto& e : stored_output.at("index"))
+      if (!fs::exists(fs::path(o.out) / e.at("file").get<std::string>()))
+        throw InputError("--out " + o.out + ": snapshot " + e.at("file").get<std::string>() + " of the run being restarted is "
+                         "not there; --out must be the directory of the run that wrote " + restarted_from.string());
+    next_out = stored_output.at("next_out").get<double>();
+  } else {
+    prepare_output_dir(o.out, o.overwrite);
+  }
+  Hdf5Output out(o.out, prov);
   std::fprintf(stderr, "geosph run: %s, %zu fluid + %zu soil + %zu structure + %zu wall particles, %s kernel, %d thread(s)\n",
                scene.name.c_str(), sim.fluid_count(), sim.soil_count(), sim.structure_count(),
                sim.particles().size() - sim.moving_count(), kernel_name(scene.kernel).c_str(), omp_get_max_threads());
-  out.write(sim.particles(), sim.time(), sim.steps());
-  double next_out = scene.output_interval > 0 ? scene.output_interval : 1e300;
-  Progress bar(scene.t_end, !quiet);
+  if (restarted_from.empty()) {
+    out.write(sim.particles(), sim.time(), sim.steps());
+  } else {
+    out.resume(stored_output.at("index"));
+    std::fprintf(stderr, "restarted from %s at step %ld, t = %.9g s\n", restarted_from.c_str(), sim.steps(), sim.time());
+  }
+  const long first_step = sim.steps();
+  fs::path last_checkpoint;
+  const auto checkpoint = [&](const Simulation& s) {
+    last_checkpoint = checkpoint_path(o.out, s.steps());
+    write_checkpoint(last_checkpoint, s, prov, {{"index", out.index()}, {"next_out", next_out}});
+    prune_checkpoints(o.out, o.checkpoint_keep);
+  };
+  Progress bar(scene.t_end, !o.quiet);
   const auto t0 = std::chrono::steady_clock::now();
+  auto last_wall_checkpoint = t0;
   int rc = 0;
+  bool interrupted = false;
   try {
     sim.run([&](const Simulation& s) {
       if (s.time() >= next_out * (1 - 1e-9)) {
@@ -48,26 +129,50 @@ int cmd_run(const std::string& scene_path, const std::string& out_dir, bool quie
         next_out += scene.output_interval;
       }
       bar.update(s.steps(), s.time());
+      const auto now = std::chrono::steady_clock::now();
+      if (g_signal != 0 || (o.stop_after > 0 && s.steps() >= o.stop_after)) {
+        interrupted = true;
+        sim.request_stop();
+      } else if ((o.checkpoint_every > 0 && s.steps() % o.checkpoint_every == 0) ||
+                 (o.checkpoint_wall > 0 && std::chrono::duration<double>(now - last_wall_checkpoint).count() >= o.checkpoint_wall)) {
+        checkpoint(s);
+        last_wall_checkpoint = now;
+      }
     });
-    if (scene.output_interval <= 0 || sim.time() > next_out - scene.output_interval + 1e-12)
+    if (interrupted) {
+      checkpoint(sim);
+      rc = kExitInterrupted;
+    } else if (scene.output_interval <= 0 || sim.time() > next_out - scene.output_interval + 1e-12) {
       out.write(sim.particles(), sim.time(), sim.steps());
+    }
   } catch (const InstabilityError& e) {
     bar.finish(sim.steps(), sim.time());
-    std::ofstream(fs::path(out_dir) / "diagnosis.txt") << e.what() << "\n";
+    std::ofstream(fs::path(o.out) / "diagnosis.txt") << e.what() << "\nprovenance: " << prov.to_json().dump() << "\n";
     std::fprintf(stderr, "error: %s\n(diagnosis written to %s/diagnosis.txt; snapshots before the failure are kept)\n",
-                 e.what(), out_dir.c_str());
+                 e.what(), o.out.c_str());
     rc = 3;
   }
   bar.finish(sim.steps(), sim.time());
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double rate = wall > 0 ? sim.moving_count() * static_cast<double>(sim.steps()) / wall : 0;
-  nlohmann::json summary = {{"scene", scene.name}, {"steps", sim.steps()}, {"time", sim.time()}, {"wall_s", wall},
-                            {"material_particles", sim.moving_count()}, {"particles", sim.particles().size()},
+  const long steps = sim.steps() - first_step;
+  const double rate = wall > 0 ? sim.moving_count() * static_cast<double>(steps) / wall : 0;
+  nlohmann::json summary = {{"scene", scene.name}, {"steps", sim.steps()}, {"steps_this_run", steps}, {"time", sim.time()},
+                            {"wall_s", wall}, {"material_particles", sim.moving_count()}, {"particles", sim.particles().size()},
                             {"particle_steps_per_s", rate}, {"threads", omp_get_max_threads()},
-                            {"snapshots", out.snapshots()}, {"stable", rc == 0}};
-  std::ofstream(fs::path(out_dir) / "summary.json") << summary.dump(2) << "\n";
+                            {"snapshots", out.snapshots()}, {"stable", rc != 3}, {"finished", rc == 0},
+                            {"provenance", prov.to_json()}};
+  if (!restarted_from.empty()) summary["restarted_from"] = restarted_from.string();
+  if (!last_checkpoint.empty()) summary["last_checkpoint"] = last_checkpoint.string();
+  {
+    const auto tmp = fs::path(o.out) / "summary.json.tmp";
+    std::ofstream(tmp) << summary.dump(2) << "\n";
+    fs::rename(tmp, fs::path(o.out) / "summary.json");
+  }
+  if (rc == kExitInterrupted)
+    std::fprintf(stderr, "interrupted at step %ld, t = %.9g s: checkpoint %s\n(continue with: geosph run %s --out %s --restart %s)\n",
+                 sim.steps(), sim.time(), last_checkpoint.c_str(), o.scene.c_str(), o.out.c_str(), o.out.c_str());
   std::fprintf(stderr, "%s: %ld steps to t = %.6g s in %.2f s wall, %.3g particle-steps/s, %zu snapshots in %s\n",
-               rc == 0 ? "done" : "stopped", sim.steps(), sim.time(), wall, rate, out.snapshots(), out_dir.c_str());
+               rc == 0 ? "done" : "stopped", steps, sim.time(), wall, rate, out.snapshots(), o.out.c_str());
   return rc;
 }
 
@@ -133,11 +238,26 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
 
   auto* run = app.add_subcommand("run", "run a scene");
-  std::string scene_path, out_dir;
-  bool quiet = false;
-  run->add_option("scene", scene_path, "scene file (JSON)")->required();
-  run->add_option("--out", out_dir, "output directory (HDF5 snapshots + XDMF index)")->required();
-  run->add_flag("--quiet", quiet, "no progress display");
+  RunOptions ro;
+  run->add_option("scene", ro.scene, "scene file (JSON)")->required();
+  run->add_option("--out", ro.out, "output directory (HDF5 snapshots + XDMF index, checkpoints/)")->required();
+  run->add_flag("--quiet", ro.quiet, "no progress display");
+  run->add_flag("--overwrite", ro.overwrite, "replace an earlier run's output in --out (otherwise a non-empty --out is refused)");
+  run->add_option("--max-particles", ro.limits.max_particles, "refuse scenes with more particles (estimated before allocating)")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  run->add_option("--max-cells", ro.limits.max_cells, "refuse domains with more neighbour-search cells")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  run->add_option("--restart", ro.restart, "continue from a checkpoint file, or the newest in a run directory's checkpoints/")
+      ->excludes("--overwrite");
+  run->add_option("--checkpoint-every", ro.checkpoint_every, "write a checkpoint every N steps (0: off)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  run->add_option("--checkpoint-wall", ro.checkpoint_wall, "write a checkpoint every T seconds of wall time (0: off)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  run->add_option("--checkpoint-keep", ro.checkpoint_keep, "checkpoints kept (the newest)")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  run->add_option("--stop-after-steps", ro.stop_after,
+                  "stop after step N as if interrupted: checkpoint, exit code 4 (0: off)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
 
   auto* ver = app.add_subcommand("verify", "run verification cases and write result records");
   std::vector<std::string> cases;
@@ -161,7 +281,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (threads > 0) omp_set_num_threads(threads);
   try {
-    if (*run) return cmd_run(scene_path, out_dir, quiet);
+    if (*run) return cmd_run(ro);
     if (*ver) return cmd_verify(cases, level, vout, vprogress);
     if (*ref) {
       if (ref_format == "markdown") std::printf("%s", scene_reference_markdown().c_str());

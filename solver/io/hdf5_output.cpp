@@ -1,75 +1,100 @@
 #include "io/hdf5_output.hpp"
 
-#include <hdf5.h>
-
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
+
+#include "io/hdf5_file.hpp"
 
 namespace geosph {
 
 namespace {
 
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5 error while writing " + what);
+std::string xml_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      default: o += c;
+    }
+  }
+  return o;
 }
 
-void write_dataset(hid_t file, const std::string& name, hid_t type, const void* data, hsize_t rows, hsize_t cols) {
-  hsize_t dims[2] = {rows, cols};
-  hid_t space = H5Screate_simple(cols > 1 ? 2 : 1, dims, nullptr);
-  hid_t set = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) { H5Sclose(space); throw std::runtime_error("HDF5: cannot create dataset " + name); }
-  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);
-  H5Dclose(set);
-  H5Sclose(space);
+std::string snapshot_name(std::size_t k) {
+  char name[64];
+  std::snprintf(name, sizeof name, "particles_%06zu.h5", k);
+  return name;
 }
 
 }  // namespace
 
-Hdf5Output::Hdf5Output(std::filesystem::path dir) : dir_(std::move(dir)) { std::filesystem::create_directories(dir_); }
+Hdf5Output::Hdf5Output(std::filesystem::path dir, Provenance provenance)
+    : dir_(std::move(dir)), provenance_(std::move(provenance)) {
+  std::filesystem::create_directories(dir_);
+}
 
 void Hdf5Output::write(const Particles& P, double time, long step) {
-  char name[64];
-  std::snprintf(name, sizeof name, "particles_%06zu.h5", entries_.size());
-  const auto final_path = dir_ / name, tmp_path = dir_ / (std::string(name) + ".tmp");
+  const std::string name = snapshot_name(entries_.size());
+  const auto final_path = dir_ / name, tmp_path = dir_ / (name + ".tmp");
   const std::size_t n = P.size();
   std::vector<double> xyz(3 * n), v(3 * n);
-  std::vector<int> kind(n);
+  std::vector<std::int32_t> kind(n);
   for (std::size_t i = 0; i < n; ++i) {
     xyz[3 * i] = P.x[i]; xyz[3 * i + 1] = P.y[i]; xyz[3 * i + 2] = P.z[i];
     v[3 * i] = P.vx[i]; v[3 * i + 1] = P.vy[i]; v[3 * i + 2] = P.vz[i];
-    kind[i] = static_cast<int>(P.kind[i]);
+    kind[i] = static_cast<std::int32_t>(P.kind[i]);
   }
-  hid_t file = H5Fcreate(tmp_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error("cannot create " + tmp_path.string());
-  write_dataset(file, "position", H5T_NATIVE_DOUBLE, xyz.data(), n, 3);
-  write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, v.data(), n, 3);
-  write_dataset(file, "density", H5T_NATIVE_DOUBLE, P.rho.data(), n, 1);
-  write_dataset(file, "pressure", H5T_NATIVE_DOUBLE, P.p.data(), n, 1);
-  write_dataset(file, "mass", H5T_NATIVE_DOUBLE, P.m.data(), n, 1);
-  write_dataset(file, "kind", H5T_NATIVE_INT, kind.data(), n, 1);
-  write_dataset(file, "id", H5T_NATIVE_INT64, P.id.data(), n, 1);
-  std::vector<std::string> extra;
-  for (const auto& [fname, f] : P.extra_fields()) {
-    write_dataset(file, fname, H5T_NATIVE_DOUBLE, f.data(), n, 1);
-    extra.push_back(fname);
+  Entry e{name, time, n, {}, {}};
+  {
+    Hdf5File f = Hdf5File::create(tmp_path);
+    f.write("position", xyz, 3);
+    f.write("velocity", v, 3);
+    f.write("density", P.rho);
+    f.write("pressure", P.p);
+    f.write("mass", P.m);
+    f.write("kind", kind);
+    f.write("id", P.id);
+    for (const auto& [fname, field] : P.extra_fields()) {
+      f.write(fname, field);
+      e.extra.push_back(fname);
+    }
+    for (const auto& [fname, field] : P.int_fields()) {
+      f.write(fname, field);
+      e.ints.push_back(fname);
+    }
+    f.attribute("time", time);
+    f.attribute("step", step);
+    f.attribute("solver_version", provenance_.solver_version);
+    f.attribute("compiler", provenance_.compiler);
+    f.attribute("build_flags", provenance_.build_flags);
+    f.attribute("threads", static_cast<long>(provenance_.threads));
+    f.attribute("scene_hash", provenance_.scene_hash);
+    f.close();
   }
-  std::vector<std::string> ints;
-  for (const auto& [fname, f] : P.int_fields()) {
-    write_dataset(file, fname, H5T_NATIVE_INT32, f.data(), n, 1);
-    ints.push_back(fname);
-  }
-  hid_t aspace = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, aspace, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
-  H5Aclose(attr);
-  hid_t sattr = H5Acreate2(file, "step", H5T_NATIVE_LONG, aspace, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(sattr, H5T_NATIVE_LONG, &step);
-  H5Aclose(sattr);
-  H5Sclose(aspace);
-  check(H5Fclose(file), tmp_path.string());
   std::filesystem::rename(tmp_path, final_path);
-  entries_.push_back({name, time, n, extra, ints});
+  entries_.push_back(std::move(e));
+  write_index();
+}
+
+nlohmann::json Hdf5Output::index() const {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& e : entries_) j.push_back({{"file", e.file}, {"time", e.time}, {"n", e.n}, {"extra", e.extra}, {"ints", e.ints}});
+  return j;
+}
+
+void Hdf5Output::resume(const nlohmann::json& index) {
+  entries_.clear();
+  for (const auto& e : index)
+    entries_.push_back({e.at("file").get<std::string>(), e.at("time").get<double>(), e.at("n").get<std::size_t>(),
+                        e.at("extra").get<std::vector<std::string>>(), e.at("ints").get<std::vector<std::string>>()});
+  for (std::size_t k = entries_.size();; ++k) {  // snapshots the interrupted run wrote after its checkpoint
+    const auto p = dir_ / snapshot_name(k);
+    std::filesystem::remove(dir_ / (snapshot_name(k) + ".tmp"));
+    if (!std::filesystem::remove(p)) break;
+  }
   write_index();
 }
 
@@ -78,8 +103,12 @@ void Hdf5Output::write_index() const {
   {
     std::ofstream x(tmp);
     x.precision(17);
-    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
+    const nlohmann::json prov = provenance_.to_json();
+    for (const auto& [key, value] : prov.items())
+      x << "  <Information Name=\"" << key << "\" Value=\""
+        << xml_escape(value.is_string() ? value.get<std::string>() : value.dump()) << "\"/>\n";
+    x << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& e : entries_) {
       auto item = [&](const std::string& ds, int cols, const char* type, int prec) {
         x << "     <DataItem Dimensions=\"" << e.n << (cols > 1 ? " 3" : "") << "\" NumberType=\"" << type
@@ -106,6 +135,7 @@ void Hdf5Output::write_index() const {
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    if (!x) throw std::runtime_error("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, dir_ / "particles.xdmf");
 }

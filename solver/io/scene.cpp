@@ -1,11 +1,14 @@
 #include "io/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "boundary/body_input.hpp"
+#include "boundary/geometry.hpp"
 #include "boundary/wall_input.hpp"
 #include "io/json_fields.hpp"
+#include "io/json_file.hpp"
+#include "core/provenance.hpp"
 #include "io/scene_reference.hpp"
 #include "materials/model_list.hpp"
 
@@ -88,6 +91,8 @@ const bool documented_materials = register_section(
 Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   Scene s;
   s.file = file;
+  s.source = j.dump();  // canonical: keys sorted, no whitespace or comments
+  s.hash = content_hash(s.source);
   JsonFields top(j, file, "");
   top.section("scene");
   s.name = top.text("name");
@@ -255,6 +260,65 @@ static void validate_two_phase(const Scene& s) {
   }
 }
 
+// Intersection volume of two boxes (dim axes).
+static double overlap_volume(int dim, const std::array<double, 3>& alo, const std::array<double, 3>& ahi,
+                             const std::array<double, 3>& blo, const std::array<double, 3>& bhi) {
+  double v = 1;
+  for (int a = 0; a < dim; ++a) v *= std::max(0.0, std::min(ahi[a], bhi[a]) - std::max(alo[a], blo[a]));
+  return v;
+}
+
+// No two bodies may overlap (their particles would sit on top of each other) except a saturated soil
+// inside its pore water, and no body may reach into a wall block or the wall layers behind a closed
+// side of a container. Touching is allowed. A rigid structure (prescribed motion) may pass through
+// wall layers: walls and rigid structures do not act on each other (a retaining wall's foot reaches
+// below the ground's surface, as in rankine_active).
+static void validate_overlaps(const Scene& s) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw InputError(s.file + ": field '" + field + "': " + what);
+  };
+  const double tiny = 1e-9 * std::pow(s.dx, s.dim);
+  const auto is_fluid = [&](const BodySpec& b) { return !is_solid_material(s, b.material); };
+  for (std::size_t i = 0; i < s.bodies.size(); ++i)
+    for (std::size_t k = i + 1; k < s.bodies.size(); ++k) {
+      const BodySpec &a = s.bodies[i], &b = s.bodies[k];
+      if (is_fluid(a) != is_fluid(b) && s.two_phase()) continue;  // pore water and its soil skeleton
+      if (overlap_volume(s.dim, a.lo, a.hi, b.lo, b.hi) > tiny)
+        fail("bodies[" + std::to_string(k) + "]", "overlaps bodies[" + std::to_string(i) +
+                                                      "]: their particles would sit on top of each other; bodies "
+                                                      "may touch but not intersect");
+    }
+  static const char* lo_side[3] = {"left", "bottom", "back"};
+  static const char* hi_side[3] = {"right", "top", "front"};
+  // boundary/geometry.cpp: dummy walls are wall_layers deep, repulsive walls one line on the surface
+  const double L = (s.walls.type == "repulsive" ? 1 : wall_layers(s)) * s.dx;
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    const BodySpec& b = s.bodies[k];
+    if (b.is_rigid_structure()) continue;
+    const std::string field = "bodies[" + std::to_string(k) + "]";
+    for (std::size_t c = 0; c < s.walls.blocks.size(); ++c)
+      if (overlap_volume(s.dim, b.lo, b.hi, s.walls.blocks[c].lo, s.walls.blocks[c].hi) > tiny)
+        fail(field, "overlaps the wall block walls.blocks[" + std::to_string(c) + "]");
+    for (std::size_t c = 0; c < s.walls.containers.size(); ++c) {
+      const ContainerSpec& w = s.walls.containers[c];
+      for (int a = 0; a < s.dim; ++a) {
+        if (s.domain.periodic[a]) continue;
+        for (int side = 0; side < 2; ++side) {
+          const char* name = side == 0 ? lo_side[a] : hi_side[a];
+          if (std::find(w.open.begin(), w.open.end(), name) != w.open.end()) continue;
+          auto lo = w.lo, hi = w.hi;  // the wall's layers behind this side
+          for (int o = 0; o < s.dim; ++o)
+            if (o != a) { lo[o] -= L; hi[o] += L; }
+          if (side == 0) { hi[a] = w.lo[a]; lo[a] = w.lo[a] - L; } else { lo[a] = w.hi[a]; hi[a] = w.hi[a] + L; }
+          if (overlap_volume(s.dim, b.lo, b.hi, lo, hi) > tiny)
+            fail(field, std::string("reaches into the wall layers of walls.containers[") + std::to_string(c) + "] (its " +
+                            name + " side, " + std::to_string(L) + " m thick)");
+        }
+      }
+    }
+  }
+}
+
 void validate_scene(const Scene& s) {
   auto fail = [&](const std::string& field, const std::string& what) {
     throw InputError(s.file + ": field '" + field + "': " + what);
@@ -271,7 +335,7 @@ void validate_scene(const Scene& s) {
     }
   }
   // every body and every wall layer must lie inside the domain
-  const double wall_thick = (s.walls.layers > 0 ? s.walls.layers : std::ceil(s.support() / s.dx)) * s.dx;
+  const double wall_thick = wall_layers(s) * s.dx;
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
     for (int a = 0; a < s.dim; ++a)
       if (s.bodies[b].lo[a] < s.domain.lo[a] || s.bodies[b].hi[a] > s.domain.hi[a])
@@ -309,20 +373,14 @@ void validate_scene(const Scene& s) {
                  m.name + "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
   validate_structures(s);
   validate_two_phase(s);
+  validate_overlaps(s);
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")
     fail("walls.type", "soil needs dummy walls (they carry the soil's stress); repulsive walls are for fluids only");
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open scene file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path.string() + ": not valid JSON: " + e.what());
-  }
-  return parse_scene(j, path.string());
+  if (!std::filesystem::exists(path)) throw InputError(path.string() + ": cannot open scene file");
+  return parse_scene(read_json_file(path), path.string());
 }
 
 }  // namespace geosph

@@ -67,8 +67,16 @@ struct WallSpec {
   std::vector<ContainerSpec> blocks;  // solid boxes of wall particles (e.g. a clamp); `open` unused
 };
 
+// Resource limits of a run (not scene fields: the command line sets them, sim/resource_limits.hpp).
+struct RunLimits {
+  double max_particles = 2e7;  // --max-particles; ~8 GB of a soil scene
+  double max_cells = 2e8;      // --max-cells; the cell list's 4 bytes per cell (0.8 GB)
+};
+
 struct Scene {
   std::string file;                   // where it was read from (for messages)
+  std::string source;                 // the scene's JSON, canonical (keys sorted, no comments)
+  std::string hash;                   // content_hash(source) (core/provenance.hpp)
   std::string name;
   int dim = 2;
   double dx = 0;
@@ -84,6 +92,7 @@ struct Scene {
   double t_end = 0;
   double cfl = 0.2, force_factor = 0.25, viscous_factor = 0.125;
   long max_steps = 100000000;
+  RunLimits limits;
   double output_interval = 0;         // 0: first and last state only
   int reorder_every = 20;             // steps between sorting particles in memory by cell
   double max_density_variation = 0.5; // |rho/rho0 - 1| beyond this is a blow-up

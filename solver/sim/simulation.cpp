@@ -1,16 +1,19 @@
 #include "sim/simulation.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "boundary/body_fields.hpp"
 #include "boundary/geometry.hpp"
 #include "io/json_fields.hpp"
+#include "sim/resource_limits.hpp"
 #include "sim/stages.hpp"
 
 namespace geosph {
 
 Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   validate_scene(scene_);
+  check_resources(scene_);  // before anything is allocated
   P_ = build_particles(scene_);
   n_fluid_ = P_.count(Kind::Fluid);
   n_soil_ = P_.count(Kind::Soil);
@@ -233,9 +236,31 @@ void Simulation::step() {
   choose_time_step();
 }
 
+Simulation::RunState Simulation::run_state() const {
+  RunState s{{"time", {t_}}, {"dt", {dt_}}, {"step", {static_cast<double>(step_)}},
+             {"state_summary", {state_.v_max, state_.a_max}}};
+  if (soil_) s["soil_max_wave_speed"] = {soil_->max_wave_speed()};
+  if (rigid_) s["rigid_motion"] = rigid_->state();
+  return s;
+}
+
+void Simulation::restore_run_state(const RunState& s) {
+  const auto get = [&](const std::string& k, std::size_t n) -> const std::vector<double>& {
+    const auto it = s.find(k);
+    if (it == s.end() || (n > 0 && it->second.size() != n)) throw std::invalid_argument("run state '" + k + "' missing");
+    return it->second;
+  };
+  t_ = get("time", 1)[0];
+  dt_ = get("dt", 1)[0];
+  step_ = static_cast<long>(get("step", 1)[0]);
+  state_ = {get("state_summary", 2)[0], get("state_summary", 2)[1]};
+  if (soil_) soil_->restore_max_wave_speed(get("soil_max_wave_speed", 1)[0]);
+  if (rigid_) rigid_->restore_state(get("rigid_motion", 0));
+}
+
 void Simulation::run(const std::function<void(const Simulation&)>& observe, double until) {
   const double t_stop = until > 0 ? std::min(until, scene_.t_end) : scene_.t_end;
-  while (t_ < t_stop * (1 - 1e-12) && step_ < scene_.max_steps) {
+  while (t_ < t_stop * (1 - 1e-12) && step_ < scene_.max_steps && !stop_) {
     if (t_ + dt_ > t_stop) dt_ = t_stop - t_;
     step();
     if (observe) observe(*this);

@@ -8,6 +8,9 @@
 //   a^{n+1} from (x^{n+1}, v^{n+1/2}, rho^{n+1}, sigma^{n+1}),   v^{n+1} = v^{n+1/2} + dt/2 a^{n+1}.
 #pragma once
 #include <functional>
+#include <map>
+#include <string>
+#include <vector>
 #include <memory>
 
 #include "boundary/dummy_wall.hpp"
@@ -58,6 +61,15 @@ class Simulation {
   // 2012, eq. 33, there from zero).
   std::array<double, 3> gravity_at(double t) const;
 
+  // The state a restart needs besides the particle fields (io/checkpoint.hpp): time, step count, step
+  // length, the last state summary and the modules' running state, as named numbers.
+  using RunState = std::map<std::string, std::vector<double>>;
+  RunState run_state() const;
+  void restore_run_state(const RunState& s);  // throws std::invalid_argument naming a missing entry
+  // Makes run() return after the current step (an interruption; the state stays consistent).
+  void request_stop() { stop_ = true; }
+  bool stop_requested() const { return stop_; }
+
  private:
   void neighbour_search();  // cell list (and, every reorder_every steps, particles sorted by cell)
   std::vector<Stage> stage_table();  // the step's stages in order, for this scene's modules
@@ -86,6 +98,7 @@ class Simulation {
   std::size_t n_fluid_ = 0, n_soil_ = 0, n_structure_ = 0;
   double t_ = 0, dt_ = 0;
   long step_ = 0;
+  bool stop_ = false;
 };
 
 }  // namespace geosph

@@ -38,6 +38,7 @@ class SoilForces {
   // Largest P-wave speed of the soil now (Modified Cam Clay: from the current stresses, updated with
   // every stress update); the time step's acoustic limit.
   double max_wave_speed() const;
+  void restore_max_wave_speed(double c) const { max_wave_speed_ = c; }  // a restart (io/checkpoint.hpp)
   double density(std::size_t material) const { return scene_.soils[material].density; }
 
   // At x^{n+1} with v^{n+1/2}: density rate and the stress update over dt (velocity gradient,

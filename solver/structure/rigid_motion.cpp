@@ -3,6 +3,7 @@
 #include "boundary/body_fields.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include "core/time_step.hpp"
 
 namespace geosph {
@@ -56,6 +57,25 @@ void RigidMotions::advance(Particles& P, double t, double dt) {
     state_[b].angle += f * m.angular_velocity * dt;
   }
   set_velocities(P, t + dt);
+}
+
+std::vector<double> RigidMotions::state() const {
+  std::vector<double> v;
+  for (const auto& s : state_) {
+    v.insert(v.end(), s.centre.begin(), s.centre.end());
+    v.insert(v.end(), s.displacement.begin(), s.displacement.end());
+    v.push_back(s.angle);
+  }
+  return v;
+}
+
+void RigidMotions::restore_state(const std::vector<double>& v) {
+  if (v.size() != 7 * state_.size()) throw std::invalid_argument("rigid motion state: wrong size");
+  for (std::size_t b = 0; b < state_.size(); ++b) {
+    const double* q = v.data() + 7 * b;
+    for (int a = 0; a < 3; ++a) { state_[b].centre[a] = q[a]; state_[b].displacement[a] = q[3 + a]; }
+    state_[b].angle = q[6];
+  }
 }
 
 }  // namespace geosph

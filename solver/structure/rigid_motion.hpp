@@ -23,6 +23,9 @@ class RigidMotions {
   // Accumulated translation of body b's reference point and its rotation [rad] so far.
   std::array<double, 3> displacement(std::size_t body) const { return state_[body].displacement; }
   double rotation(std::size_t body) const { return state_[body].angle; }
+  // The running state (centre, displacement, angle of every body) as numbers, for a checkpoint.
+  std::vector<double> state() const;
+  void restore_state(const std::vector<double>& v);
 
  private:
   struct State {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/provenance.hpp"
 #include "harness/driver_registry.hpp"
 #include "harness/tolerance_check.hpp"
 #include "io/json_fields.hpp"
@@ -51,7 +52,12 @@ std::vector<CaseEntry> discover_cases(const std::filesystem::path& data_dir) {
 
 std::vector<Record> run_case(const CaseEntry& entry, const CaseContext& ctx) {
   std::vector<Record> records = drivers().at(entry.driver)(ctx, entry.name);
-  for (const auto& name : flag_unreported_tolerances(load_case(ctx, entry.name), ctx, records))
+  // the case's inputs: case.json and scene.json as parsed (canonical), the hash in every record
+  const CaseConfig cfg = load_case(ctx, entry.name);
+  nlohmann::json inputs = {{"case", read_json_file(cfg.dir / "case.json")}, {"scene", cfg.scene_json}};
+  const nlohmann::json prov = provenance(content_hash(inputs.dump())).to_json();
+  for (auto& r : records) r.provenance = prov;
+  for (const auto& name : flag_unreported_tolerances(cfg, ctx, records))
     std::fprintf(stderr, "%s: case.json names tolerance '%s' but the case reported no such metric (failed)\n",
                  entry.name.c_str(), name.c_str());
   return records;

@@ -42,6 +42,7 @@ nlohmann::json Record::to_json() const {
     j["series"].push_back({{"name", s.name}, {"role", s.role}, {"plot", s.plot}, {"xlabel", s.xlabel},
                            {"ylabel", s.ylabel}, {"x", s.x}, {"y", s.y}});
   if (!snapshot.is_null()) j["snapshot"] = snapshot;
+  if (!provenance.is_null()) j["provenance"] = provenance;
   for (auto it = extra.begin(); it != extra.end(); ++it) j[it.key()] = it.value();
   return j;
 }

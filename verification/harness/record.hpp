@@ -40,6 +40,8 @@ struct Record {
   nlohmann::json extra = nlohmann::json::object();  // merged into the record (e.g. expected_order)
   std::vector<Series> series;
   nlohmann::json snapshot;  // {x, y, field, values, units}
+  // solver version, compiler and flags, threads, hash of the case's input files (core/provenance.hpp)
+  nlohmann::json provenance;
 
   // value <= tolerance passes; a metric of an unstable run is recorded as failing
   void add_metric(const std::string& name, double value, double tolerance, const std::string& why);

@@ -1,12 +1,14 @@
 // Bad input: every kind of mistake gives one clear InputError naming the file, the field and what
 // is allowed; through the `geosph` command it exits non-zero and leaves no output directory.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
@@ -328,4 +330,80 @@ TEST(SceneInput, SurchargedBodyKeepsItsInitialVelocity) {
     if (P.y[i] > 0.45) ++top;
   }
   EXPECT_EQ(top, 20);
+}
+
+// Documents no parser should accept and resources no machine has (issue 20): through the command
+// line, each gets one message naming the file and the field, exit code 2 and no output directory.
+namespace {
+struct BadScene {
+  std::string name, text, message;
+};
+
+std::string with(const std::string& key_value) {  // valid_scene() with one more top-level member
+  std::string t = valid_scene().dump(1);
+  return t.insert(1, key_value + ",");
+}
+
+std::vector<BadScene> bad_scenes() {
+  json overlap = valid_scene(), in_wall = valid_scene(), many = valid_scene(), huge = valid_scene();
+  overlap["bodies"].push_back({{"material", "water"}, {"shape", "box"}, {"min", {0.1, 0.1}}, {"max", {0.3, 0.3}}});
+  in_wall["bodies"][0]["min"] = {-0.05, 0.0};
+  many["dx"] = 2e-7;
+  huge["domain"] = {{"min", {-1e5, -1e5}}, {"max", {1e5, 1e5}}};
+  std::string deep = "[";
+  for (int k = 0; k < 200000; ++k) deep += "[";
+  for (int k = 0; k <= 200000; ++k) deep += "]";
+  return {
+      {"deep", with("\"extra\": " + deep), "scene.json: nested deeper than 64 levels (below 'extra[] x 63')"},
+      {"overflow", with("\"gravity_scale\": 1e309"), "scene.json: [json.exception.out_of_range.406] number overflow"},
+      {"duplicate", with("\"dx\": 0.03"), "scene.json: field 'dx': given twice in the same object"},
+      {"particles", many.dump(), "scene.json: field 'dx': dx = 2e-07 m creates about 1e+12 particles, more than the limit"},
+      {"domain", huge.dump(), "scene.json: field 'domain': the domain spans about 3.91e+13 neighbour-search cells"},
+      {"overlap", overlap.dump(), "scene.json: field 'bodies[1]': overlaps bodies[0]"},
+      {"in_wall", in_wall.dump(), "scene.json: field 'bodies[0]': reaches into the wall layers of walls.containers[0] (its left side"},
+  };
+}
+}  // namespace
+
+TEST(SceneInput, CommandLineRefusesDocumentsAndSizesItCannotHandle) {
+  for (const auto& bad : bad_scenes()) {
+    const fs::path dir = fs::temp_directory_path() / ("geosph_cli_" + bad.name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "scene.json") << bad.text;
+    const fs::path out = dir / "out", err = dir / "stderr.txt";
+    const std::string cmd = std::string(GEOSPH_EXE) + " run " + (dir / "scene.json").string() + " --out " + out.string() +
+                            " --quiet 2> " + err.string();
+    const int status = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << bad.name << ": status " << status;
+    EXPECT_FALSE(fs::exists(out)) << bad.name << ": output directory left behind";
+    std::stringstream msg;
+    msg << std::ifstream(err).rdbuf();
+    EXPECT_NE(msg.str().find(bad.message), std::string::npos) << bad.name << ": " << msg.str();
+  }
+}
+
+// An output directory holding an earlier run is refused (never mixed); --overwrite replaces that run's
+// files and keeps the user's own.
+TEST(SceneInput, CommandLineRefusesAnEarlierRunsOutputUnlessOverwrite) {
+  const fs::path dir = fs::temp_directory_path() / "geosph_cli_existing_out";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.json") << valid_scene().dump(1);
+  const fs::path out = dir / "out", err = dir / "stderr.txt";
+  const std::string run = std::string(GEOSPH_EXE) + " run " + (dir / "scene.json").string() + " --out " + out.string() +
+                          " --quiet 2> " + err.string();
+  ASSERT_EQ(std::system(run.c_str()), 0);
+  std::ofstream(out / "notes.txt") << "mine";
+  fs::rename(out / "particles_000001.h5", out / "particles_000009.h5");  // a file no new run writes
+  const int again = std::system(run.c_str());
+  EXPECT_TRUE(WIFEXITED(again) && WEXITSTATUS(again) == 2);
+  std::stringstream msg;
+  msg << std::ifstream(err).rdbuf();
+  EXPECT_NE(msg.str().find("the directory exists and is not empty"), std::string::npos) << msg.str();
+  EXPECT_TRUE(fs::exists(out / "particles_000009.h5")) << "a refused run must not touch the directory";
+  ASSERT_EQ(std::system((run + " --overwrite").c_str()), 0);
+  EXPECT_FALSE(fs::exists(out / "particles_000009.h5")) << "the earlier run's snapshot was kept next to the new ones";
+  EXPECT_TRUE(fs::exists(out / "particles_000001.h5"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt")) << "--overwrite removed a file GeoSPH did not write";
 }
