@@ -2,7 +2,7 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer pass (CMake preset "sanitize", build-sanitize/): builds
 # geosph and the unit tests with -fsanitize=address,undefined, runs the unit tests and two small
 # scenes (a fluid and a two-phase one, 200 steps each). Any sanitizer report fails the script.
-# Run by ci/test.sh after the default gate; by hand: bash ci/sanitize.sh
+# Run by CI (.ci/run) after the test command; by hand: bash ci/sanitize.sh
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${SANITIZE_BUILD_DIR:-$ROOT/build-sanitize}"

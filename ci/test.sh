@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The test command: installs dependencies, builds, and runs the default test set (unit tests,
-# report-generator tests and the verification catalogue at its quick level), then the sanitizer
-# pass (ci/sanitize.sh). Heavier studies carry the ctest label `convergence` and are excluded here;
-# run them with
+# report-generator tests and the verification catalogue at its quick level). CI (.ci/run) runs the
+# sanitizer pass (ci/sanitize.sh) after it. Heavier studies carry the ctest label `convergence` and
+# are excluded here; run them with
 #   ctest --test-dir build -L convergence
 # The soak test (10^6 steps: constant memory, readable output at every moment) has the label `soak`:
 #   ctest --test-dir build -L soak
@@ -15,6 +15,3 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 bash "$ROOT/ci/build.sh"
 ctest --test-dir "$BUILD_DIR" -LE 'convergence|open|soak' --output-on-failure
-# The unit tests and two small scenes again, built with AddressSanitizer + UndefinedBehaviorSanitizer
-# in build-sanitize/ (about 15 min on 2 cores); SANITIZE=0 skips it.
-if [ "${SANITIZE:-1}" != "0" ]; then bash "$ROOT/ci/sanitize.sh"; fi
