@@ -31,6 +31,14 @@ std::string snapshot_name(std::size_t k) {
 
 }  // namespace
 
+void write_provenance(Hdf5File& f, const Provenance& p) {
+  f.attribute("solver_version", p.solver_version);
+  f.attribute("compiler", p.compiler);
+  f.attribute("build_flags", p.build_flags);
+  f.attribute("threads", static_cast<long>(p.threads));
+  f.attribute("scene_hash", p.scene_hash);
+}
+
 Hdf5Output::Hdf5Output(std::filesystem::path dir, Provenance provenance)
     : dir_(std::move(dir)), provenance_(std::move(provenance)) {
   std::filesystem::create_directories(dir_);
@@ -67,11 +75,7 @@ void Hdf5Output::write(const Particles& P, double time, long step) {
     }
     f.attribute("time", time);
     f.attribute("step", step);
-    f.attribute("solver_version", provenance_.solver_version);
-    f.attribute("compiler", provenance_.compiler);
-    f.attribute("build_flags", provenance_.build_flags);
-    f.attribute("threads", static_cast<long>(provenance_.threads));
-    f.attribute("scene_hash", provenance_.scene_hash);
+    write_provenance(f, provenance_);
     f.close();
   }
   std::filesystem::rename(tmp_path, final_path);

@@ -15,6 +15,11 @@
 
 namespace geosph {
 
+class Hdf5File;
+// The provenance as attributes of the file's root (solver_version, compiler, build_flags, threads,
+// scene_hash); snapshots and checkpoints carry them.
+void write_provenance(Hdf5File& f, const Provenance& p);
+
 class Hdf5Output {
  public:
   Hdf5Output(std::filesystem::path dir, Provenance provenance);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "io/hdf5_file.hpp"
+#include "io/hdf5_output.hpp"
 #include "io/json_fields.hpp"
 
 namespace geosph {
@@ -35,11 +36,7 @@ void write_checkpoint(const std::filesystem::path& file, const Simulation& sim, 
   {
     Hdf5File f = Hdf5File::create(tmp);
     f.attribute("format", kCheckpointFormat);
-    f.attribute("solver_version", provenance.solver_version);
-    f.attribute("compiler", provenance.compiler);
-    f.attribute("build_flags", provenance.build_flags);
-    f.attribute("threads", static_cast<long>(provenance.threads));
-    f.attribute("scene_hash", sim.scene().hash);
+    write_provenance(f, provenance);  // its scene_hash is the scene's (provenance(scene.hash))
     f.attribute("scene_name", sim.scene().name);
     f.attribute("time", sim.time());
     f.attribute("step", sim.steps());
@@ -101,13 +98,6 @@ nlohmann::json restore_checkpoint(const std::filesystem::path& file, Simulation&
         refuse(file, "'" + name + "' holds " + std::to_string(v.size()) + " particles, the scene " + std::to_string(n));
       return v;
     };
-    for_each_core_array(P, [&](const char* name, std::vector<double>& v) {
-      v = sized(f.read_doubles(std::string("particles/") + name), name);
-    });
-    const auto kind = sized(f.read_uint8("particles/kind"), "kind");
-    for (std::size_t i = 0; i < n; ++i) P.kind[i] = static_cast<Kind>(kind[i]);
-    P.id = sized(f.read_int64("particles/id"), "id");
-    P.material = sized(f.read_uint16("particles/material"), "material");
     // the same optional fields as the scene creates: a different set means another solver layout
     const auto names = [](const auto& fields) {
       std::vector<std::string> v;
@@ -126,8 +116,15 @@ nlohmann::json restore_checkpoint(const std::filesystem::path& file, Simulation&
       refuse(file, group + " differ from what this solver creates for the scene (missing:" + (missing.empty() ? " none" : missing) +
                        "; not known:" + (extra.empty() ? " none" : extra) + ")");
     };
-    same_fields("fields", names(P.extra_fields()));
+    same_fields("fields", names(P.extra_fields()));  // checked before anything of `sim` is overwritten
     same_fields("int_fields", names(P.int_fields()));
+    for_each_core_array(P, [&](const char* name, std::vector<double>& v) {
+      v = sized(f.read_doubles(std::string("particles/") + name), name);
+    });
+    const auto kind = sized(f.read_uint8("particles/kind"), "kind");
+    for (std::size_t i = 0; i < n; ++i) P.kind[i] = static_cast<Kind>(kind[i]);
+    P.id = sized(f.read_int64("particles/id"), "id");
+    P.material = sized(f.read_uint16("particles/material"), "material");
     for (const auto& name : names(P.extra_fields())) P.field(name) = sized(f.read_doubles("fields/" + name), name);
     for (const auto& name : names(P.int_fields())) P.int_field(name) = sized(f.read_int32("int_fields/" + name), name);
     Simulation::RunState rs;
