@@ -184,7 +184,11 @@ TEST(Restart, SigtermWritesACheckpointAndTheRunResumes) {
     execl(GEOSPH_EXE, GEOSPH_EXE, "--threads", "1", "run", sc.c_str(), "--out", out.c_str(), "--quiet", nullptr);
     _exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  // the first snapshot is written after the signal handlers are installed: signal once it exists
+  // (a signal during start-up, on a loaded machine, would meet the default action)
+  for (int k = 0; k < 600 && !fs::exists(d / "run" / "particles_000000.h5"); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
