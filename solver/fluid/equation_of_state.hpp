@@ -9,10 +9,22 @@ namespace geosph {
 
 struct TaitEos {
   double rho0, c0, gamma, B, p_bg;
+  int integer_gamma;  // gamma when it is a whole number up to 16 (7 for water), else 0
   explicit TaitEos(const FluidMaterial& m)
       : rho0(m.density), c0(m.sound_speed), gamma(m.gamma), B(m.density * m.sound_speed * m.sound_speed / m.gamma),
-        p_bg(m.background_pressure) {}
-  double pressure(double rho) const { return B * (std::pow(rho / rho0, gamma) - 1.0) + p_bg; }
+        p_bg(m.background_pressure),
+        integer_gamma(m.gamma >= 1 && m.gamma <= 16 && m.gamma == std::floor(m.gamma) ? static_cast<int>(m.gamma) : 0) {}
+  // A whole-number gamma is raised by squaring: std::pow was 3% of a dam-break step.
+  double pressure(double rho) const {
+    const double x = rho / rho0;
+    return B * ((integer_gamma ? power(x, integer_gamma) : std::pow(x, gamma)) - 1.0) + p_bg;
+  }
+  static double power(double x, int k) {
+    double r = 1.0;
+    for (; k > 0; k >>= 1, x *= x)
+      if (k & 1) r *= x;
+    return r;
+  }
   double density(double p) const {
     const double u = (p - p_bg) / B + 1.0;
     return u > 0 ? rho0 * std::pow(u, 1.0 / gamma) : rho0 * 1e-3;

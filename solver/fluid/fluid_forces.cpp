@@ -44,59 +44,40 @@ const double* FluidForces::porosity(const Particles& P) const {
   return P.field(SeepageFields::porosity).data();
 }
 
-void FluidForces::continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
-  std::visit([&](const auto& k) { continuity_with(k, P, cells, g); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
-}
-
-void FluidForces::momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+void FluidForces::rates(Particles& P, const CellList& cells, const std::array<double, 3>& g, double dt_predicted) const {
   // walls whose slip differs per container read a per-particle flag; the common case keeps the pair
   // loop free of it (the flag lookup per wall pair cost 10% of a dam-break step)
   const bool mixed = P.find_int(BodyFields::wall_free_slip) != nullptr;
+  const bool porous = porosity(P) != nullptr;
+  const auto run = [&]<int Dim>(const auto& k) {
+    if (mixed) porous ? rates_with<Dim, true, true>(k, P, cells, g) : rates_with<Dim, true, false>(k, P, cells, g);
+    else porous ? rates_with<Dim, false, true>(k, P, cells, g) : rates_with<Dim, false, false>(k, P, cells, g);
+  };
   std::visit([&](const auto& k) {
-    if (mixed) momentum_with<true>(k, P, cells, g);
-    else momentum_with<false>(k, P, cells, g);
+    if (scene_.dim == 2) run.template operator()<2>(k);
+    else run.template operator()<3>(k);
   }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+  correct_density(P, dt_predicted);
 }
 
-template <class K>
-void FluidForces::continuity_with(const K& kernel, Particles& P, const CellList& cells,
-                                  const std::array<double, 3>& g) const {
+// The step predicted rho with the last rate (integrate hook: rho~ = rho^n + dt drho^{n-1}); with the new
+// rate the density is rho^n + dt drho^n, i.e. rho~ + dt (drho^n - drho^{n-1}). A separate pass: the pair
+// loop reads its neighbours' densities.
+void FluidForces::correct_density(Particles& P, double dt_predicted) const {
   const std::size_t n = P.size();
-  const double h = scene_.h(), eta2 = 0.01 * h * h;
-  const double* por = porosity(P);
-#pragma omp parallel for schedule(dynamic, 256)
+  const double* fresh = drho_new_.data();
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
-    const FluidMaterial& mi = mats_[P.material[i]];
-    const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
-    const double delta_hc = mi.density_diffusion * h * mi.sound_speed;
-    const double ni = por ? por[i] : 1.0;
-    const TaitEos& eos = eos_[P.material[i]];
-    const bool hydrostatic = mi.density_diffusion_hydrostatic;
-    double drho = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
-      const Kind kj = P.kind[j];
-      if (kj != Kind::Fluid && kj != Kind::DummyWall) return;  // the skeleton acts through coupling/seepage
-      const double fw = kernel.gradW_over_r(std::sqrt(r2));  // grad_i W_ij = fw * r_ij
-      const double mj = P.m[j];
-      // walls enter with their own (prescribed) velocity, zero for fixed walls
-      drho += mj * fw * ((vxi - P.vx[j]) * dx + (vyi - P.vy[j]) * dy + (vzi - P.vz[j]) * dz);
-      // pore water: the diffusion acts on the intrinsic density (rho/n), scaled back by n_i
-      if (kj == Kind::Fluid && delta_hc > 0) {
-        double d = rhoi - (por ? ni * P.rho[j] / por[j] : P.rho[j]);
-        // hydrostatic pair difference rho^H_i - rho^H_j from p_i - p_j = rho0 g . r_ij through the Tait
-        // equation (Fourtakas et al. 2019, eq. 17)
-        if (hydrostatic) d -= ni * eos.hydrostatic_density_difference(g[0] * dx + g[1] * dy + g[2] * dz);
-        drho += delta_hc * 2.0 * d * fw * r2 / (r2 + eta2) * mj / P.rho[j];
-      }
-    });
-    P.drho[i] = drho;
+    P.rho[i] += dt_predicted * (fresh[i] - P.drho[i]);
+    P.drho[i] = fresh[i];
   }
 }
 
-template <bool MixedSlip, class K>
-void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& cells,
-                                const std::array<double, 3>& g) const {
+// Continuity, delta-SPH and momentum in one neighbour pass: each fluid particle gathers its own sums
+// (no scatter, so the result does not depend on the thread count).
+template <int Dim, bool MixedSlip, bool Porous, class K>
+void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   // Laminar term regularisation: Morris et al. (1997) use eta^2 = 0.01 h^2, but with eta/h fixed
@@ -110,59 +91,108 @@ void FluidForces::momentum_with(const K& kernel, Particles& P, const CellList& c
   const double* wvz = P.find(DummyWallFields::vz);
   const double D = repulsive_D_, r0 = repulsive_r0_;
   const auto bf = scene_.body_force;
-  // p/rho^2 once per particle (fluid and extrapolated walls) instead of once per pair
+  // p/rho^2 and m/rho once per particle (fluid and extrapolated walls) instead of once per pair
   pressure_over_rho2_.resize(n);
+  volume_.resize(n);
+  drho_new_.resize(n);
   double* pr2 = pressure_over_rho2_.data();
+  double* vol = volume_.data();
+  double* drho_out = drho_new_.data();
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) pr2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
-  const double* por = porosity(P);
-
-#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Fluid) continue;
+    pr2[i] = P.p[i] / (P.rho[i] * P.rho[i]);
+    vol[i] = P.m[i] / P.rho[i];
+  }
+  const double* por = Porous ? porosity(P) : nullptr;
+  const Kind* kind = P.kind.data();
+  const double *m = P.m.data(), *rho = P.rho.data(), *p = P.p.data();
+  const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
+
+  // a.b in Dim dimensions (2D: the z terms are not computed at all)
+  const auto dot = [](double ax, double ay, double az, double bx, double by, double bz) {
+    if constexpr (Dim == 3) return ax * bx + ay * by + az * bz;
+    else {
+      (void)az; (void)bz;
+      return ax * bx + ay * by;
+    }
+  };
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind[i] != Kind::Fluid) continue;
     const FluidMaterial& mi = mats_[P.material[i]];
-    const double rhoi = P.rho[i], pi_r2 = pr2[i];
-    const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    const double rhoi = rho[i], pi_r2 = pr2[i], pi = p[i];
+    const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
     const double alpha_c = mi.artificial_viscosity * mi.sound_speed;
     const double mu_i = rhoi * mi.kinematic_viscosity;
-    const double ni = por ? por[i] : 1.0;  // pore water: -n grad p / (n rho_w)
-    double ax = 0, ay = 0, az = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
-      const Kind kj = P.kind[j];
-      if (kj != Kind::Fluid && kj != Kind::DummyWall && kj != Kind::RepulsiveWall) return;
-      if (kj == Kind::RepulsiveWall) {
-        if (r2 < r0 * r0 && r2 > 0) {
+    const double delta_hc = mi.density_diffusion * h * mi.sound_speed;
+    const double ni = Porous ? por[i] : 1.0;  // pore water: -n grad p / (n rho_w)
+    const TaitEos& eos = eos_[P.material[i]];
+    const bool hydrostatic = mi.density_diffusion_hydrostatic;
+    const bool free_slip = free_slip_walls_;
+    double drho = 0, ax = 0, ay = 0, az = 0;
+    cells.gather<Dim>(P, i, nb);
+    const std::size_t nn = nb.size();
+    const double av_i = alpha_c * h;
+    const bool diffusion = delta_hc > 0;
+    for (std::size_t k = 0; k < nn; ++k) {
+      const std::uint32_t j = nb.j[k];
+      const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0, r2 = nb.r2[k];
+      const Kind kj = kind[j];
+      if (kj != Kind::Fluid && kj != Kind::DummyWall) {  // the skeleton acts through coupling/seepage
+        if (kj == Kind::RepulsiveWall && r2 < r0 * r0 && r2 > 0) {
           const double s2 = r0 * r0 / r2, s4 = s2 * s2, s12 = s4 * s4 * s4;
           const double f = D * (s12 - s4) / r2;
-          ax += f * dx; ay += f * dy; az += f * dz;
+          ax += f * dx; ay += f * dy; if constexpr (Dim == 3) az += f * dz;
         }
-        return;
+        continue;
       }
+      // Coin-flip conditions (wall or fluid neighbour, approaching or receding pair) are selects, not
+      // branches.
       const double fw = kernel.gradW_over_r(std::sqrt(r2));  // grad_i W_ij = fw * r_ij
-      const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
-      const double mj = P.m[j], rhoj = P.rho[j];
-      const double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
+      const double mj = m[j], rhoj = rho[j];
+      const double ux = vxi - vx[j], uy = vyi - vy[j], uz = Dim == 3 ? vzi - vz[j] : 0.0;
+      const bool wall = kj == Kind::DummyWall;
+      const double inv_r2 = 1.0 / (r2 + eta2);
+      // continuity (Monaghan 1992, eq. 4.7); walls enter with their own (prescribed) velocity
+      drho += mj * fw * dot(ux, uy, uz, dx, dy, dz);
+      if (diffusion) {
+        // delta-SPH between fluid particles (Molteni & Colagrossi 2009, eq. 14); pore water: on the
+        // intrinsic density (rho/n), scaled back by n_i
+        double d = rhoi - (Porous ? ni * rhoj / por[j] : rhoj);
+        // hydrostatic pair difference rho^H_i - rho^H_j from p_i - p_j = rho0 g . r_ij through the Tait
+        // equation (Fourtakas et al. 2019, eq. 17)
+        if (hydrostatic) d -= ni * eos.hydrostatic_density_difference(dot(g[0], g[1], g[2], dx, dy, dz));
+        const double diff = delta_hc * 2.0 * d * fw * r2 * inv_r2 * vol[j];
+        drho += wall ? 0.0 : diff;
+      }
       // pore water: its partial density n rho_w jumps where the porosity does (0.4 -> 1 at a soil surface
       // under free water); (p_i + p_j)/(rho_i rho_j) estimates grad p / rho_i without a rho-gradient error
       // (Colagrossi & Landrini 2003, J. Comput. Phys. 191, 448-475, for density jumps)
-      double coef = por ? ni * mj * (P.p[i] + P.p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
-      const bool wall = kj == Kind::DummyWall;
-      if (!(wall && (MixedSlip ? slip[j] != 0 : free_slip_walls_))) {  // free slip: no viscous interaction with the wall (Adami et al. 2012)
-        double vx = ux, vy = uy, vz = uz;
-        if (wall && wvx) { vx = vxi - wvx[j]; vy = vyi - wvy[j]; vz = vzi - wvz[j]; }
-        const double vr = vx * dx + vy * dy + vz * dz;
-        if (alpha_c > 0 && vr < 0) coef += mj * (-alpha_c * h * vr / (r2 + eta2)) / (0.5 * (rhoi + rhoj));  // m_j Pi_ij
-        if (mu_i > 0) {
-          const double mu_j = wall ? mu_i : rhoj * mats_[P.material[j]].kinematic_viscosity;
-          const double lam = mj * (mu_i + mu_j) * (fw * r2) / (rhoi * rhoj * (r2 + eta2_lam));
-          ax += lam * vx; ay += lam * vy; az += lam * vz;
-        }
+      double coef = Porous ? ni * mj * (pi + p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
+      // free slip: no viscous interaction with the wall (Adami et al. 2012)
+      const bool viscous = !(wall && (MixedSlip ? slip[j] != 0 : free_slip));
+      const bool ghost_v = wall && wvx;  // no-slip walls: the extrapolated velocity
+      const double wx = ghost_v ? vxi - wvx[j] : ux, wy = ghost_v ? vyi - wvy[j] : uy;
+      const double wz = Dim == 3 && ghost_v ? vzi - wvz[j] : uz;
+      const double vr = std::min(dot(wx, wy, wz, dx, dy, dz), 0.0);  // approaching pairs only
+      // m_j Pi_ij, Pi_ij = -alpha c0 h v_ij.r_ij / ((r^2 + eta^2) rho_ij)
+      const double av = -mj * av_i * vr * inv_r2 * 2.0 / (rhoi + rhoj);
+      coef += viscous ? av : 0.0;
+      if (mu_i > 0) {
+        const double mu_j = wall ? mu_i : rhoj * mats_[P.material[j]].kinematic_viscosity;
+        const double lam = viscous ? mj * (mu_i + mu_j) * (fw * r2) / (rhoi * rhoj * (r2 + eta2_lam)) : 0.0;
+        ax += lam * wx; ay += lam * wy; if constexpr (Dim == 3) az += lam * wz;
       }
-      ax -= coef * gx; ay -= coef * gy; az -= coef * gz;
-    });
+      ax -= coef * fw * dx; ay -= coef * fw * dy; if constexpr (Dim == 3) az -= coef * fw * dz;
+    }
+    drho_out[i] = drho;
     P.ax[i] = ax + g[0] + bf[0];
     P.ay[i] = ay + g[1] + bf[1];
     P.az[i] = az + g[2] + bf[2];
+  }
   }
 }
 

@@ -28,21 +28,22 @@ class FluidForces {
   explicit FluidForces(const Scene& scene);
   // Pressure of fluid particles from their density.
   void update_pressure(Particles& P) const;
-  // Density rates of fluid particles (continuity + delta-SPH); `g` is the current gravity (the
-  // hydrostatic part of the density diffusion).
-  void continuity(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
-  // Accelerations of fluid particles; `g` is the current gravity.
-  void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  // Density rates (continuity + delta-SPH) and accelerations of the fluid particles in one neighbour
+  // pass, at the state the step predicted: rho~ = rho^n + dt drho^{n-1} (Simulation's density stage,
+  // `dt_predicted` its step; 0 when nothing was predicted, as at t = 0). Then corrects the density to
+  // rho^n + dt drho^n with the new rate, so rho stays the second-order update it was with a separate
+  // continuity pass; only the pressure the accelerations see is the predicted one, O(dt^2) off.
+  // `g` is the current gravity (and the hydrostatic part of the density diffusion).
+  void rates(Particles& P, const CellList& cells, const std::array<double, 3>& g, double dt_predicted) const;
 
   const std::vector<TaitEos>& eos() const { return eos_; }
   double max_sound_speed() const;
   double max_kinematic_viscosity() const;
 
  private:
-  template <class K>
-  void continuity_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
-  template <bool MixedSlip, class K>
-  void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  template <int Dim, bool MixedSlip, bool Porous, class K>
+  void rates_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  void correct_density(Particles& P, double dt_predicted) const;
 
   // porosity of the pore water (two-phase scenes, coupling/seepage.hpp), else null
   const double* porosity(const Particles& P) const;
@@ -52,7 +53,7 @@ class FluidForces {
   std::vector<FluidMaterial> mats_;
   bool free_slip_walls_;
   double repulsive_D_, repulsive_r0_;
-  mutable std::vector<double> pressure_over_rho2_;  // scratch, per particle
+  mutable std::vector<double> pressure_over_rho2_, volume_, drho_new_;  // scratch, per particle
 };
 
 }  // namespace geosph

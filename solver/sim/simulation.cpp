@@ -92,11 +92,12 @@ void Simulation::neighbour_search() {
   }
 }
 
-// The stages of the step, in order, for the modules this scene has (sim/stages.hpp). Rates: the fluid's
-// continuity reads the fluid walls' values from the last forces hook; in a two-phase scene the soil
-// walls are re-extrapolated at x^{n+1} before the soil's stress update. Forces: the soil walls before
-// the soil's momentum, the fluid walls after the fluid pressure; the seepage coupling after every other
-// force (the drag pairs their sums), the contact last (it corrects the accelerations of touching pairs).
+// The stages of the step, in order, for the modules this scene has (sim/stages.hpp). Rates: in a
+// two-phase scene the soil walls are re-extrapolated at x^{n+1} before the soil's stress update.
+// Integrate: the fluid's density is predicted with its last rate, and corrected by its forces stage,
+// which computes rate and acceleration in one neighbour pass. Forces: the soil walls before the soil's
+// momentum, the fluid walls after the fluid pressure; the seepage coupling after every other force (the
+// drag pairs their sums), the contact last (it corrects the accelerations of touching pairs).
 std::vector<Stage> Simulation::stage_table() {
   std::vector<Stage> t;
   const auto add = [&](bool present, Stage st) {
@@ -112,8 +113,6 @@ std::vector<Stage> Simulation::stage_table() {
   add(rigid_ != nullptr, {"rigid_motion", Hook::Drift, {"t"}, {"x[rigid]", "v[rigid]"}, {},
                           [this] { rigid_->advance(P_, t_, dt_); }});
   // rates at x^{n+1}, v^{n+1/2}
-  add(fluid_ != nullptr, {"fluid_continuity", Hook::Rates, {"x", "v", "rho", "m", "p", "wall_v*", "porosity"},
-                          {"drho[fluid]"}, {}, [this] { fluid_->continuity(P_, cells_, gravity_at(t_)); }});
   add(seepage_ != nullptr, {"seepage_porosity_rate", Hook::Rates, {"x", "v", "porosity"}, {"porosity_rate"}, {},
                             [this] { seepage_->porosity_rate(P_, cells_); }});
   add(seepage_ && soil_walls_, soil_walls(Hook::Rates));
@@ -136,8 +135,9 @@ std::vector<Stage> Simulation::stage_table() {
   add(dummy_walls_ != nullptr, {"fluid_walls", Hook::Forces, {"x", "v", "p[fluid]", "rho[fluid]", "porosity"},
                                 {"p[walls]", "rho[walls]", "m[walls]", "wall_v*", "porosity[walls]"}, {},
                                 [this] { dummy_walls_->update(P_, cells_, gravity_at(t_)); }});
-  add(fluid_ != nullptr, {"fluid_momentum", Hook::Forces, {"x", "v", "rho", "m", "p", "wall_v*"}, {"a[fluid]"}, {},
-                          [this] { fluid_->momentum(P_, cells_, gravity_at(t_)); }});
+  add(fluid_ != nullptr, {"fluid_rates", Hook::Forces, {"x", "v", "rho", "m", "p", "wall_v*", "porosity"},
+                          {"a[fluid]", "drho[fluid]", "rho[fluid]"}, {},
+                          [this] { fluid_->rates(P_, cells_, gravity_at(t_), density_dt_); }});
   add(surcharge, {"surcharge", Hook::Forces, {"surcharge", "surcharge_ramp", "t"}, {}, {"a[solid]"},
                   [this] { apply_surcharge(); }});
   add(seepage_ != nullptr, {"seepage_coupling", Hook::Forces, {"p", "porosity", "kernel sums"},
@@ -157,6 +157,7 @@ void Simulation::run_hook(Hook h) {
 void Simulation::integrate_density() {
   const std::size_t n = P_.size();
   const double dt = dt_;
+  density_dt_ = dt;  // the fluid's rate is last step's here: its forces stage corrects rho (fluid/fluid_forces.hpp)
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
     if (is_moving(P_.kind[i])) P_.rho[i] += dt * P_.drho[i];

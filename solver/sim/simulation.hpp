@@ -97,6 +97,7 @@ class Simulation {
   StateSummary state_;
   std::size_t n_fluid_ = 0, n_soil_ = 0, n_structure_ = 0;
   double t_ = 0, dt_ = 0;
+  double density_dt_ = 0;  // the step the density stage last predicted the fluid density with (0 before the first)
   long step_ = 0;
   bool stop_ = false;
 };

@@ -87,15 +87,21 @@ void SoilForces::update_wave_speeds(Particles& P) const {
 double SoilForces::max_wave_speed() const { return max_wave_speed_; }
 
 void SoilForces::update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const {
-  std::visit([&](const auto& k) { update_stress_with(k, P, cells, dt, step, time); },
-             make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+  std::visit([&](const auto& k) {
+    if (scene_.dim == 2) update_stress_with<2>(k, P, cells, dt, step, time);
+    else update_stress_with<3>(k, P, cells, dt, step, time);
+  }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
 }
 
 void SoilForces::momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
-  std::visit([&](const auto& k) { momentum_with(k, P, cells, g); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+  std::visit([&](const auto& k) {
+    if (scene_.dim == 2) momentum_with<2>(k, P, cells, g);
+    else momentum_with<3>(k, P, cells, g);
+  }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
 }
 
-template <class K>
+// Dim: the dimension; in 2D the out-of-plane rows of L and B are zero and are not summed.
+template <int Dim, class K>
 void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellList& cells, double dt, long step,
                                     double time) const {
   const std::size_t n = P.size();
@@ -132,12 +138,12 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j];
       }
       const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) L[a][b] += Vj * dv[a] * grad[b];
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) L[a][b] += Vj * dv[a] * grad[b];
       if (correct) {
         const double rji[3] = {-dx, -dy, -dz};  // x_j - x_i
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) B[a][b] += Vj * rji[a] * grad[b];
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) B[a][b] += Vj * rji[a] * grad[b];
       }
     });
     if (correct) {
@@ -243,7 +249,7 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
   }
 }
 
-template <class K>
+template <int Dim, class K>
 void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& cells,
                                const std::array<double, 3>& g) const {
   const std::size_t n = P.size();
@@ -289,20 +295,26 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         for (int c = 0; c < 6; ++c) T[c] += f * (Ri[c] + Rj[c]);
       }
       {
-        double ux = vxi - P.vx[j], uy = vyi - P.vy[j], uz = vzi - P.vz[j];
-        if (wall && wvx) { ux = vxi - wvx[j]; uy = vyi - wvy[j]; uz = vzi - wvz[j]; }
-        const double vr = ux * dx + uy * dy + uz * dz;
-        if (vr < 0) {
-          const double mu = h * vr / (r2 + eta2);
-          const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
-          const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
-          T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
-        }
+        // Monaghan's artificial viscosity for approaching pairs, as a select (the sign of v.r is a coin
+        // flip, a branch on it was mispredicted half the time)
+        const bool ghost = wall && wvx;
+        const double ux = vxi - (ghost ? wvx[j] : P.vx[j]), uy = vyi - (ghost ? wvy[j] : P.vy[j]);
+        const double uz = Dim == 3 ? vzi - (ghost ? wvz[j] : P.vz[j]) : 0.0;
+        const double vr = std::min(Dim == 3 ? ux * dx + uy * dy + uz * dz : ux * dx + uy * dy, 0.0);
+        const double mu = h * vr / (r2 + eta2);
+        const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
+        const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
+        T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
       }
       // (T . grad W)_a with T symmetric: components xx yy zz xy xz yz
-      ax += mj * (T[0] * gx + T[3] * gy + T[4] * gz);
-      ay += mj * (T[3] * gx + T[1] * gy + T[5] * gz);
-      az += mj * (T[4] * gx + T[5] * gy + T[2] * gz);
+      if constexpr (Dim == 3) {
+        ax += mj * (T[0] * gx + T[3] * gy + T[4] * gz);
+        ay += mj * (T[3] * gx + T[1] * gy + T[5] * gz);
+        az += mj * (T[4] * gx + T[5] * gy + T[2] * gz);
+      } else {
+        ax += mj * (T[0] * gx + T[3] * gy);
+        ay += mj * (T[3] * gx + T[1] * gy);
+      }
     });
     P.ax[i] = ax + g[0] + scene_.body_force[0];
     P.ay[i] = ay + g[1] + scene_.body_force[1];

@@ -49,10 +49,10 @@ class SoilForces {
   void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
  private:
-  template <class K>
+  template <int Dim, class K>
   void update_stress_with(const K& kernel, Particles& P, const CellList& cells, double dt, long step,
                           double time) const;
-  template <class K>
+  template <int Dim, class K>
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   void prepare_pair_terms(Particles& P) const;
   // Mass and density as the soil's sums see them: the soil walls' ghost values at dummy particles

@@ -112,3 +112,30 @@ TEST(CellList, ReportsParticleOutsideTheBox) {
   P.y[3] = std::nan("");
   EXPECT_EQ(cl.build(P, box, 0.1), 3);
 }
+
+// A neighbour query inside another's pair function (e.g. a wall particle's sums within a fluid
+// particle's loop) keeps both neighbour sets intact.
+TEST(CellList, NestedQueriesKeepTheirNeighbours) {
+  Box box;
+  box.dim = 2;
+  box.hi = {1, 1, 1};
+  Particles P = random_particles(box, 400, 7);
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, 0.12), -1);
+  for (std::size_t i = 0; i < P.size(); i += 37) {
+    std::set<std::size_t> outer_alone;
+    cl.for_each_neighbor(P, i, [&](std::size_t j, double, double, double, double) { outer_alone.insert(j); });
+    std::set<std::size_t> outer;
+    cl.for_each_neighbor(P, i, [&](std::size_t j, double, double, double, double) {
+      outer.insert(j);
+      std::set<std::size_t> inner, inner_alone;
+      cl.for_each_neighbor(P, j, [&](std::size_t k, double, double, double, double) { inner.insert(k); });
+      for (std::size_t k = 0; k < P.size(); ++k) {
+        const double dx = P.x[j] - P.x[k], dy = P.y[j] - P.y[k];
+        if (k != j && dx * dx + dy * dy < 0.12 * 0.12) inner_alone.insert(k);
+      }
+      EXPECT_EQ(inner, inner_alone);
+    });
+    EXPECT_EQ(outer, outer_alone);
+  }
+}

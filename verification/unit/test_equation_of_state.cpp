@@ -2,6 +2,8 @@
 // independent GSL integration in reference/analytical/hydrostatic_tait.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "analytical/hydrostatic_tait.hpp"
 #include "fluid/equation_of_state.hpp"
 
@@ -44,4 +46,21 @@ TEST(HydrostaticTait, CompressedColumnConservesMass) {
   EXPECT_LT(ref.surface_height(), 0.4);
   EXPECT_GT(ref.surface_height(), 0.4 * (1 - 0.05));
   EXPECT_NEAR(ref.pressure(ref.surface_height()), 0.0, 1e-9);
+}
+
+// A whole-number gamma is raised by squaring: the same pressure as std::pow to rounding.
+TEST(TaitEos, WholeNumberGammaMatchesPow) {
+  for (double gamma : {1.0, 2.0, 7.0, 16.0}) {
+    FluidMaterial m = water(30);
+    m.gamma = gamma;
+    const TaitEos eos(m);
+    EXPECT_EQ(eos.integer_gamma, static_cast<int>(gamma));
+    for (double rho : {950.0, 999.0, 1000.0, 1001.5, 1080.0}) {
+      const double exact = eos.B * (std::pow(rho / 1000.0, gamma) - 1.0);
+      EXPECT_NEAR(eos.pressure(rho), exact, 1e-12 * eos.B) << "gamma " << gamma << ", rho " << rho;
+    }
+  }
+  FluidMaterial m = water(30);
+  m.gamma = 7.5;
+  EXPECT_EQ(TaitEos(m).integer_gamma, 0);
 }
