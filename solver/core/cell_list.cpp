@@ -1,6 +1,8 @@
 #include "core/cell_list.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -22,19 +24,30 @@ long CellList::build(const Particles& P, const Box& box, double radius) {
   }
   const std::size_t n = P.size(), ncell = static_cast<std::size_t>(nc_[0]) * nc_[1] * nc_[2];
   cell_.resize(n);
-  long outside = -1;
+  // the binning in parallel (the counting sort below is serial); `first_out` is the smallest index
+  // outside, whatever the thread count
+  long first_out = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(min : first_out)
   for (std::size_t i = 0; i < n; ++i) {
     if (!box.contains(P.x[i], P.y[i], P.z[i]) || !std::isfinite(P.x[i] + P.y[i] + P.z[i])) {
-      if (outside < 0) outside = static_cast<long>(i);
+      first_out = std::min(first_out, static_cast<long>(i));
       cell_[i] = 0;
       continue;
     }
     const int ci = cell_coord(P.x[i], 0), cj = cell_coord(P.y[i], 1), ck = dim_ == 3 ? cell_coord(P.z[i], 2) : 0;
     cell_[i] = static_cast<std::uint32_t>((static_cast<std::size_t>(ck) * nc_[1] + cj) * nc_[0] + ci);
   }
+  const long outside = first_out == std::numeric_limits<long>::max() ? -1 : first_out;
   start_.assign(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++start_[cell_[i] + 1];
-  for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  std::uint32_t fullest = 0;
+  for (std::size_t c = 0; c < ncell; ++c) {
+    fullest = std::max(fullest, start_[c + 1]);
+    start_[c + 1] += start_[c];
+  }
+  const std::size_t stencil_cells = dim_ == 3 ? (2 * kStencil + 1) * (2 * kStencil + 1) * (2 * kStencil + 1)
+                                              : (2 * kStencil + 1) * (2 * kStencil + 1);
+  max_candidates_ = fullest * stencil_cells;
   sorted_.resize(n);
   std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) sorted_[fill[cell_[i]]++] = static_cast<std::uint32_t>(i);

@@ -82,13 +82,13 @@ class CellList {
     const double* __restrict py = P.y.data();
     const double* __restrict pz = P.z.data();
     std::size_t n = 0;
+    out.reserve(max_candidates_);
+    std::uint32_t* __restrict oj = out.j.data();
+    double* __restrict ox = out.dx.data();
+    double* __restrict oy = out.dy.data();
+    double* __restrict oz = out.dz.data();
+    double* __restrict orr = out.r2.data();
     for_each_range(P, i, [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
-      out.reserve(n + (s1 - s0));
-      std::uint32_t* __restrict oj = out.j.data();
-      double* __restrict ox = out.dx.data();
-      double* __restrict oy = out.dy.data();
-      double* __restrict oz = out.dz.data();
-      double* __restrict orr = out.r2.data();
       const double r2max = r2max_;
       std::size_t c = n;
       for (std::uint32_t s = s0; s < s1; ++s) {
@@ -169,6 +169,7 @@ class CellList {
   std::array<double, 3> lo_{0, 0, 0}, inv_cell_{1, 1, 1}, len_{0, 0, 0};
   std::array<bool, 3> periodic_{false, false, false};
   double r_ = 0, r2max_ = 0;
+  std::size_t max_candidates_ = 0;  // the most particles a query can scan (fullest cell x stencil cells)
   bool identity_ = false;
   std::vector<std::uint32_t> start_, sorted_, cell_;
 };
