@@ -74,7 +74,7 @@ class CellList {
   // The neighbours of particle i (as for_each_neighbor) into `out`. Branch-free: every candidate is
   // written and the count advances only for a neighbour (the r < radius test is a coin flip for half
   // the candidates, and a mispredicted branch each time cost more than the stores).
-  // Dim 2 leaves dz = 0 (and out.dz untouched).
+  // Dim 2: dz is 0 and out.dz is not written.
   template <int Dim = 3>
   void gather(const Particles& P, std::size_t i, Neighbors& out) const {
     const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
