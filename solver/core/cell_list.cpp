@@ -6,22 +6,37 @@
 #include <stdexcept>
 #include <string>
 
+#include <omp.h>
+
 namespace geosph {
 
-long CellList::build(const Particles& P, const Box& box, double radius) {
+long CellList::build(const Particles& P, const Box& box, double radius, double skin) {
+  const bool same = box.dim == dim_ && radius == r_ && skin == skin_ && pair_start_.size() == P.size() + 1 &&
+                    [&] {
+                      for (int a = 0; a < box.dim; ++a)
+                        if (box.lo[a] != lo_[a] || box.length(a) != len_[a] || box.periodic[a] != periodic_[a]) return false;
+                      return true;
+                    }();
+  if (!same) cached_ = false;
   dim_ = box.dim;
   r_ = radius;
+  skin_ = skin;
   r2max_ = radius * radius;
+  list_r2max_ = (radius + skin) * (radius + skin);
+  const double reach = radius + skin;  // the cells are sized for the pair list's reach
   for (int a = 0; a < 3; ++a) {
     if (a >= dim_) { nc_[a] = 1; lo_[a] = 0; inv_cell_[a] = 0; len_[a] = 0; periodic_[a] = false; continue; }
     lo_[a] = box.lo[a];
     len_[a] = box.length(a);
     periodic_[a] = box.periodic[a];
-    nc_[a] = std::max(1, static_cast<int>(std::floor(kStencil * len_[a] / radius)));
+    nc_[a] = std::max(1, static_cast<int>(std::floor(kStencil * len_[a] / reach)));
     if (periodic_[a] && nc_[a] < 2 * kStencil + 1)
       throw std::invalid_argument("periodic axis " + std::to_string(a) + " is shorter than 3 kernel supports");
     inv_cell_[a] = nc_[a] / len_[a];
   }
+  any_periodic_ = periodic_[0] || periodic_[1] || periodic_[2];
+  for (int code = 0; code < 27; ++code)
+    for (int a = 0, c = code; a < 3; ++a, c /= 3) image_shift_[code][a] = (c % 3 - 1) * len_[a];
   const std::size_t n = P.size(), ncell = static_cast<std::size_t>(nc_[0]) * nc_[1] * nc_[2];
   cell_.resize(n);
   // the binning in parallel (the counting sort below is serial); `first_out` is the smallest index
@@ -58,6 +73,80 @@ long CellList::build(const Particles& P, const Box& box, double radius) {
 void CellList::mark_permuted() {
   for (std::size_t k = 0; k < sorted_.size(); ++k) sorted_[k] = static_cast<std::uint32_t>(k);
   identity_ = true;
+  cached_ = false;
+}
+
+double CellList::max_displacement2(const Particles& P) const {
+  const std::size_t n = P.size();
+  double d2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : d2)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = P.x[i] - x0_[i], dy = P.y[i] - y0_[i], dz = P.z[i] - z0_[i];
+    d2 = std::max(d2, dx * dx + dy * dy + dz * dz);  // NaN positions: build() has reported them
+  }
+  return d2;
+}
+
+bool CellList::update_pairs(const Particles& P) {
+  if (!(skin_ > 0)) return false;  // no list: queries scan the cells
+  if (cached_ && pair_start_.size() == P.size() + 1 && max_displacement2(P) <= 0.25 * skin_ * skin_) return false;
+  cache_pairs(P);
+  return true;
+}
+
+// Each thread scans a contiguous block of particles into its own list (each particle's sorted by j,
+// with its periodic image codes), then copies it to its place in the shared one: the list is the same
+// whatever the thread count.
+void CellList::cache_pairs(const Particles& P) {
+  cached_ = false;
+  const std::size_t n = P.size();
+  pair_start_.assign(n + 1, 0);
+  thread_pairs_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  thread_images_.resize(thread_pairs_.size());
+  const bool images = any_periodic_;
+#pragma omp parallel
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num()), T = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t b = n * t / T, e = n * (t + 1) / T;
+    std::vector<std::uint32_t>& mine = thread_pairs_[t];
+    std::vector<std::uint8_t>& my_images = thread_images_[t];
+    mine.clear();
+    my_images.clear();
+    Neighbors nb;
+    for (std::size_t i = b; i < e; ++i) {
+      if (dim_ == 2) gather_scan<2, true>(P, i, nb);
+      else gather_scan<3, true>(P, i, nb);
+      // insertion sort by j: the scan visits the cells in index order, and the particles are sorted by
+      // cell every few steps, so the scan's order is nearly ascending already
+      for (std::size_t c = 1; c < nb.n; ++c) {
+        const std::uint32_t j = nb.j[c];
+        const std::uint8_t im = nb.image[c];
+        std::size_t q = c;
+        for (; q > 0 && nb.j[q - 1] > j; --q) { nb.j[q] = nb.j[q - 1]; nb.image[q] = nb.image[q - 1]; }
+        nb.j[q] = j;
+        nb.image[q] = im;
+      }
+      const auto k = static_cast<std::ptrdiff_t>(nb.n);
+      pair_start_[i + 1] = nb.n;
+      mine.insert(mine.end(), nb.j.begin(), nb.j.begin() + k);
+      if (images) my_images.insert(my_images.end(), nb.image.begin(), nb.image.begin() + k);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) pair_start_[i + 1] += pair_start_[i];
+      pair_j_.resize(pair_start_[n]);
+      pair_image_.resize(images ? pair_start_[n] : 0);
+    }
+    const auto at = static_cast<std::ptrdiff_t>(pair_start_[b]);
+    std::copy(mine.begin(), mine.end(), pair_j_.begin() + at);
+    if (images) std::copy(my_images.begin(), my_images.end(), pair_image_.begin() + at);
+  }
+  x0_ = P.x;
+  y0_ = P.y;
+  z0_ = P.z;
+  cached_ = true;
+  ++list_builds_;
 }
 
 }  // namespace geosph

@@ -27,11 +27,12 @@ struct Box {
 struct Neighbors {
   std::vector<std::uint32_t> j;
   std::vector<double> dx, dy, dz, r2;
+  std::vector<std::uint8_t> image;  // CellList::cache_pairs only: the periodic image of j (CellList::image_code)
   std::size_t n = 0;
   std::size_t size() const { return n; }
   void reserve(std::size_t cap) {
     if (j.size() >= cap) return;
-    j.resize(cap); dx.resize(cap); dy.resize(cap); dz.resize(cap); r2.resize(cap);
+    j.resize(cap); dx.resize(cap); dy.resize(cap); dz.resize(cap); r2.resize(cap); image.resize(cap);
   }
 };
 
@@ -60,8 +61,10 @@ class NeighborStack {
 
 class CellList {
  public:
-  // Bins all particles. Returns the index of the first particle outside the box, or -1.
-  long build(const Particles& P, const Box& box, double radius);
+  // Bins all particles, in cells wide enough for neighbours within radius + skin (the pair list's
+  // reach; queries return those within radius). Returns the index of the first particle outside the
+  // box, or -1. Keeps the pair list (update_pairs) unless the box, radius or skin changed.
+  long build(const Particles& P, const Box& box, double radius, double skin = 0);
 
   // Particle indices in cell order; cell c holds sorted()[cell_start(c) .. cell_start(c+1)).
   const std::vector<std::uint32_t>& sorted() const { return sorted_; }
@@ -77,32 +80,22 @@ class CellList {
   // Dim 2: dz is 0 and out.dz is not written.
   template <int Dim = 3>
   void gather(const Particles& P, std::size_t i, Neighbors& out) const {
-    const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
-    const double* __restrict px = P.x.data();
-    const double* __restrict py = P.y.data();
-    const double* __restrict pz = P.z.data();
-    std::size_t n = 0;
-    out.reserve(max_candidates_);
-    std::uint32_t* __restrict oj = out.j.data();
-    double* __restrict ox = out.dx.data();
-    double* __restrict oy = out.dy.data();
-    double* __restrict oz = out.dz.data();
-    double* __restrict orr = out.r2.data();
-    for_each_range(P, i, [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
-      const double r2max = r2max_;
-      std::size_t c = n;
-      for (std::uint32_t s = s0; s < s1; ++s) {
-        const std::uint32_t j = identity_ ? s : sorted_[s];
-        const double dx = xi - px[j] - sx, dy = yi - py[j] - sy, dz = Dim == 3 ? zi - pz[j] - sz : 0.0;
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        oj[c] = j; ox[c] = dx; oy[c] = dy; orr[c] = r2;
-        if constexpr (Dim == 3) oz[c] = dz;
-        c += static_cast<std::size_t>((r2 < r2max) & (j != i));
-      }
-      n = c;
-    });
-    out.n = n;
+    if (cached_) gather_cached<Dim>(P, i, out);
+    else gather_scan<Dim>(P, i, out);
   }
+
+  // A Verlet pair list (Verlet 1967, Phys. Rev. 159, 98; with a skin as in Allen & Tildesley 1987,
+  // "Computer Simulation of Liquids", sec. 5.3.1): each particle's neighbours within radius + skin,
+  // rebuilt by update_pairs only when a particle has moved more than skin/2 since the last build (no
+  // pair can then have come within radius unseen), or after a permutation. Queries read the list and
+  // keep the pairs within radius: a scan of the cells visits about twice the candidates it keeps.
+  // Each particle's list is in ascending j, so a query's neighbours and their order do not depend on
+  // when the list was built (a restarted run gives the same bits), nor on the thread count.
+  // update_pairs returns whether it rebuilt the list; with no skin (build) it keeps none.
+  bool update_pairs(const Particles& P);
+  bool pairs_cached() const { return cached_; }
+  std::size_t cached_pair_count() const { return cached_ ? pair_j_.size() : 0; }
+  long pair_list_builds() const { return list_builds_; }
 
   // f(j, dx, dy, dz, r2) for every j != i with r2 < radius^2; d = x_i - x_j (minimum image).
   // The neighbours are gathered first into a per-thread buffer, so that f has a single call site
@@ -119,6 +112,85 @@ class CellList {
   }
 
  private:
+  template <int Dim, bool RecordImage = false>
+  void gather_scan(const Particles& P, std::size_t i, Neighbors& out) const {
+    const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
+    const double* __restrict px = P.x.data();
+    const double* __restrict py = P.y.data();
+    const double* __restrict pz = P.z.data();
+    std::size_t n = 0;
+    out.reserve(max_candidates_);
+    std::uint32_t* __restrict oj = out.j.data();
+    double* __restrict ox = out.dx.data();
+    double* __restrict oy = out.dy.data();
+    double* __restrict oz = out.dz.data();
+    double* __restrict orr = out.r2.data();
+    std::uint8_t* __restrict oi = out.image.data();
+    for_each_range(P, i, [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
+      const double r2max = RecordImage ? list_r2max_ : r2max_;  // the pair list reaches radius + skin
+      const std::uint8_t code = RecordImage ? image_code(sx, sy, sz) : 0;
+      std::size_t c = n;
+      for (std::uint32_t s = s0; s < s1; ++s) {
+        const std::uint32_t j = identity_ ? s : sorted_[s];
+        const double dx = xi - px[j] - sx, dy = yi - py[j] - sy, dz = Dim == 3 ? zi - pz[j] - sz : 0.0;
+        const double r2 = Dim == 3 ? dx * dx + dy * dy + dz * dz : dx * dx + dy * dy;
+        oj[c] = j; ox[c] = dx; oy[c] = dy; orr[c] = r2;
+        if constexpr (Dim == 3) oz[c] = dz;
+        if constexpr (RecordImage) oi[c] = code;
+        c += static_cast<std::size_t>((r2 < r2max) & (j != i));
+      }
+      n = c;
+    });
+    out.n = n;
+  }
+
+  // The listed neighbours of i within radius, their distances from the current positions: x_i - x_j
+  // minus the shift of j's periodic image (the scan's arithmetic); branch-free as gather_scan.
+  template <int Dim>
+  void gather_cached(const Particles& P, std::size_t i, Neighbors& out) const {
+    if (any_periodic_) gather_cached_with<Dim, true>(P, i, out);
+    else gather_cached_with<Dim, false>(P, i, out);
+  }
+  template <int Dim, bool Periodic>
+  void gather_cached_with(const Particles& P, std::size_t i, Neighbors& out) const {
+    const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
+    const double* __restrict px = P.x.data();
+    const double* __restrict py = P.y.data();
+    const double* __restrict pz = P.z.data();
+    const std::size_t k0 = pair_start_[i], n = pair_start_[i + 1] - k0;
+    const double r2max = r2max_;
+    out.reserve(n);
+    std::uint32_t* __restrict oj = out.j.data();
+    double* __restrict ox = out.dx.data();
+    double* __restrict oy = out.dy.data();
+    double* __restrict oz = out.dz.data();
+    double* __restrict orr = out.r2.data();
+    const std::uint32_t* __restrict list = pair_j_.data() + k0;
+    const std::uint8_t* __restrict img = Periodic ? pair_image_.data() + k0 : nullptr;
+    std::size_t c = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t j = list[k];
+      double dx = xi - px[j], dy = yi - py[j], dz = Dim == 3 ? zi - pz[j] : 0.0;
+      if constexpr (Periodic) {
+        const double* s = image_shift_[img[k]].data();
+        dx = dx - s[0];
+        dy = dy - s[1];
+        if constexpr (Dim == 3) dz = dz - s[2];
+      }
+      const double r2 = Dim == 3 ? dx * dx + dy * dy + dz * dz : dx * dx + dy * dy;
+      oj[c] = j; ox[c] = dx; oy[c] = dy; orr[c] = r2;
+      if constexpr (Dim == 3) oz[c] = dz;
+      c += static_cast<std::size_t>(r2 < r2max);
+    }
+    out.n = c;
+  }
+  // A periodic image as one number, 0..26: the sign of its shift along each axis, (sx, sy, sz) =
+  // image_shift_[code] (the values wrap() gives: 0 or +-len_, exactly).
+  static std::uint8_t image_code(double sx, double sy, double sz) {
+    const auto sign = [](double s) { return static_cast<int>(s > 0) - static_cast<int>(s < 0) + 1; };
+    return static_cast<std::uint8_t>(sign(sx) + 3 * sign(sy) + 9 * sign(sz));
+  }
+
   // g(s0, s1, sx, sy, sz) for each contiguous range sorted()[s0 .. s1) of the cells around particle i,
   // with the shift to add to x_j (periodic images). The cells of a row along x are consecutive in cell
   // order, so a row is one range (unless it wraps around a periodic x boundary).
@@ -168,10 +240,23 @@ class CellList {
   std::array<int, 3> nc_{1, 1, 1};
   std::array<double, 3> lo_{0, 0, 0}, inv_cell_{1, 1, 1}, len_{0, 0, 0};
   std::array<bool, 3> periodic_{false, false, false};
-  double r_ = 0, r2max_ = 0;
+  void cache_pairs(const Particles& P);
+  double max_displacement2(const Particles& P) const;  // since the pair list's build, squared
+
+  double r_ = 0, r2max_ = 0, skin_ = 0, list_r2max_ = 0;
   std::size_t max_candidates_ = 0;  // the most particles a query can scan (fullest cell x stencil cells)
   bool identity_ = false;
   std::vector<std::uint32_t> start_, sorted_, cell_;
+  // cache_pairs: particle i's neighbours are pair_j_[pair_start_[i] .. pair_start_[i+1])
+  bool cached_ = false, any_periodic_ = false;
+  long list_builds_ = 0;
+  std::vector<double> x0_, y0_, z0_;  // positions at the list's build
+  std::array<std::array<double, 3>, 27> image_shift_{};
+  std::vector<std::size_t> pair_start_;
+  std::vector<std::uint32_t> pair_j_;
+  std::vector<std::uint8_t> pair_image_;  // periodic scenes only
+  std::vector<std::vector<std::uint32_t>> thread_pairs_;
+  std::vector<std::vector<std::uint8_t>> thread_images_;
 };
 
 }  // namespace geosph

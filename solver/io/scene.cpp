@@ -75,6 +75,9 @@ const bool documented_numerics = register_section(
        "steps between sorting particles by cell (0: never)", Range::between(0, 100000)},
       number_doc("max_density_variation", Range{0, 10, true, false}, "0.5", "-",
                  "|rho/rho0 - 1| beyond this stops the run as a blow-up"),
+      number_doc("pair_list_skin", Range{0, 1, false, false}, "0.1", "kernel supports",
+                 "reach of the Verlet pair list beyond the kernel support, rebuilt when a particle has moved "
+                 "half of it (0: no list, every query scans the cells)"),
       {"kernel_gradient_correction", FieldType::Boolean, "true, false", "false", "-",
        "solids: corrected velocity gradient (Bonet & Lok 1999), exact for linear fields at free surfaces"}}});
 
@@ -146,6 +149,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     n->section("numerics");
     s.reorder_every = static_cast<int>(n->integer("reorder_every", 0, 100000, 20));
     s.max_density_variation = n->number("max_density_variation", Range{0, 10, true, false}, 0.5);
+    s.pair_list_skin = n->number("pair_list_skin", Range{0, 1, false, false}, 0.1);
     s.kernel_gradient_correction = n->boolean("kernel_gradient_correction", false);
     n->reject_unknown();
   }

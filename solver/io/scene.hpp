@@ -96,6 +96,7 @@ struct Scene {
   double output_interval = 0;         // 0: first and last state only
   int reorder_every = 20;             // steps between sorting particles in memory by cell
   double max_density_variation = 0.5; // |rho/rho0 - 1| beyond this is a blow-up
+  double pair_list_skin = 0.1;        // Verlet list reach beyond the support, in supports (0: no list)
   bool kernel_gradient_correction = false;  // soil velocity gradient corrected (Bonet & Lok 1999)
   std::vector<FluidMaterial> materials;   // fluids (Kind::Fluid particles index this list)
   std::vector<SoilMaterial> soils;       // soils (Kind::Soil particles index this list)

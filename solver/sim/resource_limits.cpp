@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -53,7 +54,13 @@ ResourceEstimate estimate_resources(const Scene& s) {
   // 1.3-6.4 x 10^5 particles (dam_break_2d 0.28 kB, granular_collapse_bui 0.50 kB, the two sets of
   // terzaghi_consolidation 0.60 kB), with a margin for output buffers and the physics' scratch.
   const double per = s.two_phase() ? 1000 : s.has_soil() ? 700 : 350;
-  e.bytes = e.particles * per;
+  // the Verlet pair list (core/cell_list.hpp): 5 bytes a pair (index and periodic image) for the
+  // lattice neighbours within the support plus skin (twice as many where two phases share the space),
+  // and the positions at its build
+  const double reach = (1.0 + s.pair_list_skin) * s.support() / s.dx;
+  const double pairs = (s.dim == 2 ? std::numbers::pi * reach * reach : 4.0 / 3.0 * std::numbers::pi * reach * reach * reach) *
+                       (s.two_phase() ? 2.0 : 1.0);
+  e.bytes = e.particles * (per + (s.pair_list_skin > 0 ? 5.0 * pairs + 24.0 : 0.0));
   const double cell = s.support() / 2;  // CellList: cells half the support wide
   e.cells = 1;
   for (int a = 0; a < s.dim; ++a) e.cells *= std::max(1.0, std::floor(s.domain.length(a) / cell));

@@ -1,5 +1,6 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,6 +11,17 @@
 #include "sim/stages.hpp"
 
 namespace geosph {
+
+namespace {
+// The Verlet list's skin [m]: numerics.pair_list_skin kernel supports, less along a short periodic axis,
+// which needs at least five cells of half the list's reach (core/cell_list.cpp).
+double pair_list_skin(const Scene& s) {
+  double skin = s.pair_list_skin * s.support();
+  for (int a = 0; a < s.dim; ++a)
+    if (s.domain.periodic[a]) skin = std::min(skin, 0.399 * s.domain.length(a) - s.support());
+  return std::max(skin, 0.0);
+}
+}  // namespace
 
 Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   validate_scene(scene_);
@@ -54,7 +66,8 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   }
   bounds_.max_density_variation = scene_.max_density_variation;
   limits_ = {scene_.cfl, scene_.force_factor, scene_.viscous_factor};
-  const long outside = cells_.build(P_, scene_.domain, scene_.support());
+  pair_skin_ = pair_list_skin(scene_);
+  const long outside = cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
   if (outside >= 0)
     throw InputError(scene_.file + ": field 'domain': particle " + std::to_string(P_.id[outside]) + " at (" +
                      std::to_string(P_.x[outside]) + ", " + std::to_string(P_.y[outside]) + ", " +
@@ -77,7 +90,7 @@ std::array<double, 3> Simulation::gravity_at(double t) const {
 }
 
 void Simulation::neighbour_search() {
-  const long outside = cells_.build(P_, scene_.domain, scene_.support());
+  const long outside = cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
   if (outside >= 0) {
     Diagnosis d;
     const auto i = static_cast<std::size_t>(outside);
@@ -90,6 +103,7 @@ void Simulation::neighbour_search() {
     P_.permute(cells_.sorted());
     cells_.mark_permuted();
   }
+  cells_.update_pairs(P_);
 }
 
 // The stages of the step, in order, for the modules this scene has (sim/stages.hpp). Rates: in a

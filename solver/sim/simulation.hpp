@@ -84,6 +84,7 @@ class Simulation {
   Scene scene_;
   Particles P_;
   CellList cells_;
+  double pair_skin_ = 0;  // the pair list's skin beyond the kernel support [m] (core/cell_list.hpp)
   std::unique_ptr<FluidForces> fluid_;
   std::unique_ptr<DummyWalls> dummy_walls_;
   std::unique_ptr<SoilForces> soil_;

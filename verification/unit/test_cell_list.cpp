@@ -139,3 +139,106 @@ TEST(CellList, NestedQueriesKeepTheirNeighbours) {
     EXPECT_EQ(outer, outer_alone);
   }
 }
+
+namespace {
+
+struct Pair {
+  std::size_t j;
+  double dx, dy, dz, r2;
+};
+
+std::vector<Pair> neighbours(const CellList& cl, const Particles& P, std::size_t i) {
+  std::vector<Pair> v;
+  cl.for_each_neighbor(P, i, [&](std::size_t j, double dx, double dy, double dz, double r2) {
+    v.push_back({j, dx, dy, dz, r2});
+  });
+  return v;
+}
+
+// The pair list's neighbours of every particle are the scan's, in ascending j, with the same bits.
+void expect_list_matches_scan(const CellList& list, const Particles& P, const Box& box, double radius) {
+  CellList scan;
+  ASSERT_EQ(scan.build(P, box, radius), -1);
+  ASSERT_FALSE(scan.pairs_cached());
+  ASSERT_TRUE(list.pairs_cached());
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    std::vector<Pair> a = neighbours(scan, P, i), b = neighbours(list, P, i);
+    std::sort(a.begin(), a.end(), [](const Pair& p, const Pair& q) { return p.j < q.j; });
+    ASSERT_EQ(a.size(), b.size()) << "particle " << i;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      ASSERT_EQ(a[k].j, b[k].j) << "particle " << i;
+      EXPECT_EQ(a[k].dx, b[k].dx);
+      EXPECT_EQ(a[k].dy, b[k].dy);
+      EXPECT_EQ(a[k].dz, b[k].dz);
+      EXPECT_EQ(a[k].r2, b[k].r2);
+    }
+    pairs += b.size();
+  }
+  EXPECT_GT(pairs, P.size());
+}
+
+// Moves every particle by less than `most` (one that would leave the box stays).
+void jiggle(Particles& P, const Box& box, double most, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double step = most / std::sqrt(3.0);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double x = P.x[i] + step * u(rng), y = P.y[i] + step * u(rng), z = box.dim == 3 ? P.z[i] + step * u(rng) : P.z[i];
+    if (box.contains(x, y, z)) { P.x[i] = x; P.y[i] = y; P.z[i] = z; }
+  }
+}
+
+void check_pair_list(const Box& box, double radius, int n, unsigned seed) {
+  const double skin = 0.2 * radius;
+  Particles P = random_particles(box, n, seed);
+  CellList list;
+  ASSERT_EQ(list.build(P, box, radius, skin), -1);
+  EXPECT_TRUE(list.update_pairs(P));
+  expect_list_matches_scan(list, P, box, radius);
+  // moves under half the skin keep the list, and it still has every pair
+  for (int round = 0; round < 3; ++round) {
+    jiggle(P, box, 0.16 * skin, seed + 10 + round);  // 3 rounds: up to 0.48 skin in all
+    ASSERT_EQ(list.build(P, box, radius, skin), -1);
+    EXPECT_FALSE(list.update_pairs(P)) << "round " << round;
+    expect_list_matches_scan(list, P, box, radius);
+  }
+  // one particle beyond half the skin: rebuilt
+  const std::size_t far = P.size() / 2;
+  P.x[far] = box.lo[0] + std::fmod(P.x[far] - box.lo[0] + 0.51 * skin, box.length(0));
+  ASSERT_EQ(list.build(P, box, radius, skin), -1);
+  EXPECT_TRUE(list.update_pairs(P));
+  expect_list_matches_scan(list, P, box, radius);
+  // a permutation renames the particles: rebuilt
+  P.permute(list.sorted());
+  list.mark_permuted();
+  EXPECT_FALSE(list.pairs_cached());
+  EXPECT_TRUE(list.update_pairs(P));
+  expect_list_matches_scan(list, P, box, radius);
+  EXPECT_EQ(list.pair_list_builds(), 3);
+}
+
+}  // namespace
+
+TEST(CellList, PairListGivesTheScansNeighboursUntilAParticleMovesHalfTheSkin) {
+  Box box2; box2.dim = 2; box2.lo = {-0.3, 0.1, 0}; box2.hi = {0.7, 0.65, 0};
+  check_pair_list(box2, 0.06, 1500, 21);
+  Box box3; box3.dim = 3; box3.lo = {0, 0, 0}; box3.hi = {0.5, 0.4, 0.3};
+  check_pair_list(box3, 0.07, 1200, 22);
+}
+
+TEST(CellList, PairListAcrossPeriodicBoundaries) {
+  Box box2; box2.dim = 2; box2.lo = {0, 0, 0}; box2.hi = {0.3, 0.5, 0}; box2.periodic = {true, false, false};
+  check_pair_list(box2, 0.08, 800, 23);
+  Box box3; box3.dim = 3; box3.lo = {0, 0, 0}; box3.hi = {0.3, 0.3, 0.3}; box3.periodic = {true, true, true};
+  check_pair_list(box3, 0.09, 800, 24);
+}
+
+TEST(CellList, NoSkinKeepsNoPairList) {
+  Box box; box.dim = 2; box.hi = {1, 1, 1};
+  Particles P = random_particles(box, 300, 25);
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, 0.1), -1);
+  EXPECT_FALSE(cl.update_pairs(P));
+  EXPECT_FALSE(cl.pairs_cached());
+}
