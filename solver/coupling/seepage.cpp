@@ -79,6 +79,16 @@ void Seepage::initialise(Particles& P, const CellList& cells) const {
   }
 }
 
+// V = m / rho of every particle, once per pass rather than once per pair (the same bits).
+const double* Seepage::volumes(const Particles& P) const {
+  const std::size_t n = P.size();
+  volume_.resize(n);
+  double* v = volume_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) v[i] = P.m[i] / P.rho[i];
+  return v;
+}
+
 void Seepage::update_porosity(Particles& P, const CellList& cells) const {
   std::visit([&](const auto& k) { porosity_with(k, P, cells); }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
 }
@@ -106,6 +116,7 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   // walls bounding the skeleton count with the soil's ghost volume (boundary/soil_wall.hpp)
   const double* swm = P.find(SoilWallFields::m);
   const double* swrho = P.find(SoilWallFields::rho);
+  const double* vol = volumes(P);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
@@ -115,12 +126,12 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
       if (ki == Kind::Fluid && kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
-        const double c = P.m[j] / P.rho[j] * (por[j] - por[i]) * kernel.gradW_over_r(std::sqrt(r2));
+        const double c = vol[j] * (por[j] - por[i]) * kernel.gradW_over_r(std::sqrt(r2));
         gn[0] += c * dx; gn[1] += c * dy; gn[2] += c * dz;
       }
       const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
       if (kj != other && !skeleton) return;
-      const double Vj = skeleton && swm ? swm[j] / swrho[j] : P.m[j] / P.rho[j];
+      const double Vj = skeleton && swm ? swm[j] / swrho[j] : vol[j];
       const double r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
       if (kj == other) sum += Vj * W;
       if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
@@ -165,6 +176,7 @@ void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& 
   const std::size_t n = P.size();
   const double* por = P.field(SeepageFields::porosity).data();
   double* dn = P.field(SeepageFields::porosity_rate).data();
+  const double* vol = volumes(P);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
@@ -173,7 +185,7 @@ void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& 
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
       if (kj != Kind::Soil && kj != Kind::Fluid && kj != Kind::DummyWall) return;  // walls: skeleton at rest
-      const double r = std::sqrt(r2), Vj = P.m[j] / P.rho[j], fw = kernel.gradW_over_r(r);
+      const double r = std::sqrt(r2), Vj = vol[j], fw = kernel.gradW_over_r(r);
       const double gr[3] = {fw * dx, fw * dy, fw * dz};
       if (kj == Kind::Fluid) {
         for (int a = 0; a < 3; ++a) gn[a] += Vj * (por[j] - por[i]) * gr[a];
@@ -229,6 +241,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   const std::int32_t* fixed = P.find_int(BodyFields::fixed);
   auto saturated = [&](std::size_t i) { return P.kind[i] == Kind::Soil && scene_.soils[P.material[i]].saturated(); };
   auto beta = [&](std::size_t s) { return por[s] * por[s] * gw / cond[s]; };  // n^2 gamma_w / k
+  const double* vol = volumes(P);
   // 1. pore-pressure force on the skeleton: the adjoint of the water's porosity rate (1 - n) div v_s
   //    (porosity_rate_with), so that the pressure work on the skeleton equals the water's compression
   //    energy: F_i = -V_i sum_j V_j (1 - n_j) p_j (grad_i W_ij + W_ij G_j / S_j), G_j = sum_s V_s grad_j W_js,
@@ -258,7 +271,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
       const Kind kj = P.kind[j];
       if (kj != Kind::Fluid && kj != Kind::DummyWall) return;
-      const double r = std::sqrt(r2), Vj = P.m[j] / P.rho[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
+      const double r = std::sqrt(r2), Vj = vol[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
       const double w_over_s = kj == Kind::Fluid && Sg[j] > 0 ? W / Sg[j] : 0.0;  // walls: no porosity rate
       const double phi = Vj * (1.0 - por[j]), vn = kj == Kind::Fluid ? Vj * w_over_s : 0.0;
       const double b[3] = {phi * (fw * dx + w_over_s * G[0][j]) + vn * GN[0][j],
@@ -295,7 +308,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
     cells.for_each_neighbor(P, i, [&](std::uint32_t j, double, double, double, double r2) {
       const double b = soil_i ? (P.kind[j] == Kind::Fluid ? bi : 0.0) : bs[j];  // the pair's skeleton beta
       if (!(b > 0)) return;
-      const double cij = b * (P.m[j] / P.rho[j]) * kernel.W(std::sqrt(r2)) * 2.0 / ((Si + S[j]) * rhoi);
+      const double cij = b * vol[j] * kernel.W(std::sqrt(r2)) * 2.0 / ((Si + S[j]) * rhoi);
       c += cij;
       sv[0] += cij * P.vx[j]; sv[1] += cij * P.vy[j]; sv[2] += cij * P.vz[j];
       if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner

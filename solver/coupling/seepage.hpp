@@ -75,7 +75,10 @@ class Seepage {
 
   const Scene& scene_;
   double rho_w_, gamma_w_, mu_w_;
+  const double* volumes(const Particles& P) const;  // m / rho of every particle, into volume_
+
   mutable std::vector<double> beta_;  // per-particle drag coefficient n^2 gamma_w / k (apply), scratch
+  mutable std::vector<double> volume_;  // scratch of volumes()
 };
 
 }  // namespace geosph
