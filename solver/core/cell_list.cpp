@@ -44,7 +44,7 @@ long CellList::build(const Particles& P, const Box& box, double radius, double s
   long first_out = std::numeric_limits<long>::max();
 #pragma omp parallel for schedule(static) reduction(min : first_out)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!box.contains(P.x[i], P.y[i], P.z[i]) || !std::isfinite(P.x[i] + P.y[i] + P.z[i])) {
+    if (!inside(box, P, i)) {
       first_out = std::min(first_out, static_cast<long>(i));
       cell_[i] = 0;
       continue;
@@ -76,6 +76,19 @@ void CellList::mark_permuted() {
   cached_ = false;
 }
 
+long CellList::find_outside(const Particles& P, const Box& box) const {
+  const std::size_t n = P.size();
+  long first_out = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(min : first_out)
+  for (std::size_t i = 0; i < n; ++i)
+    if (!inside(box, P, i)) first_out = std::min(first_out, static_cast<long>(i));
+  return first_out == std::numeric_limits<long>::max() ? -1 : first_out;
+}
+
+bool CellList::pairs_current(const Particles& P) const {
+  return cached_ && pair_start_.size() == P.size() + 1 && max_displacement2(P) <= 0.25 * skin_ * skin_;
+}
+
 double CellList::max_displacement2(const Particles& P) const {
   const std::size_t n = P.size();
   double d2 = 0;
@@ -89,7 +102,7 @@ double CellList::max_displacement2(const Particles& P) const {
 
 bool CellList::update_pairs(const Particles& P) {
   if (!(skin_ > 0)) return false;  // no list: queries scan the cells
-  if (cached_ && pair_start_.size() == P.size() + 1 && max_displacement2(P) <= 0.25 * skin_ * skin_) return false;
+  if (pairs_current(P)) return false;
   cache_pairs(P);
   return true;
 }

@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -93,6 +94,11 @@ class CellList {
   // when the list was built (a restarted run gives the same bits), nor on the thread count.
   // update_pairs returns whether it rebuilt the list; with no skin (build) it keeps none.
   bool update_pairs(const Particles& P);
+  // Whether the list holds every pair within radius now (no particle moved half the skin since its
+  // build); while it does, a step needs no new cells, only find_outside.
+  bool pairs_current(const Particles& P) const;
+  // The index of the first particle outside the box (or not finite), as build() reports it, or -1.
+  long find_outside(const Particles& P, const Box& box) const;
   bool pairs_cached() const { return cached_; }
   std::size_t cached_pair_count() const { return cached_ ? pair_j_.size() : 0; }
   long pair_list_builds() const { return list_builds_; }
@@ -241,6 +247,9 @@ class CellList {
   std::array<double, 3> lo_{0, 0, 0}, inv_cell_{1, 1, 1}, len_{0, 0, 0};
   std::array<bool, 3> periodic_{false, false, false};
   void cache_pairs(const Particles& P);
+  static bool inside(const Box& box, const Particles& P, std::size_t i) {
+    return box.contains(P.x[i], P.y[i], P.z[i]) && std::isfinite(P.x[i] + P.y[i] + P.z[i]);
+  }
   double max_displacement2(const Particles& P) const;  // since the pair list's build, squared
 
   double r_ = 0, r2max_ = 0, skin_ = 0, list_r2max_ = 0;

@@ -89,8 +89,13 @@ std::array<double, 3> Simulation::gravity_at(double t) const {
   return {f * scene_.gravity[0], f * scene_.gravity[1], f * scene_.gravity[2]};
 }
 
+// While the pair list holds every pair (no particle has moved half its skin) and no re-sort is due,
+// the cells are not rebuilt: queries read the list, and only the domain check runs.
 void Simulation::neighbour_search() {
-  const long outside = cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
+  const bool reorder = scene_.reorder_every > 0 && step_ % scene_.reorder_every == 0;
+  const bool current = !reorder && cells_.pairs_current(P_);
+  const long outside = current ? cells_.find_outside(P_, scene_.domain)
+                               : cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
   if (outside >= 0) {
     Diagnosis d;
     const auto i = static_cast<std::size_t>(outside);
@@ -99,7 +104,8 @@ void Simulation::neighbour_search() {
     d.quantity = "particle left the domain (or its position is not finite)";
     throw InstabilityError(d);
   }
-  if (scene_.reorder_every > 0 && step_ % scene_.reorder_every == 0) {
+  if (current) return;
+  if (reorder) {
     P_.permute(cells_.sorted());
     cells_.mark_permuted();
   }

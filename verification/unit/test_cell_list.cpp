@@ -108,9 +108,13 @@ TEST(CellList, ReportsParticleOutsideTheBox) {
   P.x[17] = 1.0;  // the upper face is outside (half-open box)
   CellList cl;
   EXPECT_EQ(cl.build(P, box, 0.1), 17);
+  EXPECT_EQ(cl.find_outside(P, box), 17);  // the check a step makes while its pair list is current
   P.x[17] = 0.5;
   P.y[3] = std::nan("");
   EXPECT_EQ(cl.build(P, box, 0.1), 3);
+  EXPECT_EQ(cl.find_outside(P, box), 3);
+  P.y[3] = 0.5;
+  EXPECT_EQ(cl.find_outside(P, box), -1);
 }
 
 // A neighbour query inside another's pair function (e.g. a wall particle's sums within a fluid
