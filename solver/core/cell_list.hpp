@@ -37,6 +37,20 @@ struct Neighbors {
   }
 };
 
+// What a neighbour query reads and writes, as raw pointers: the positions, and the arrays of a
+// Neighbors reserved for `cap` entries.
+struct GatherPointers {
+  const double *px, *py, *pz;
+  std::uint32_t* oj;
+  double *ox, *oy, *oz, *orr;
+  std::uint8_t* oi;
+  GatherPointers(const Particles& P, Neighbors& out, std::size_t cap) : px(P.x.data()), py(P.y.data()), pz(P.z.data()) {
+    out.reserve(cap);
+    oj = out.j.data(); ox = out.dx.data(); oy = out.dy.data(); oz = out.dz.data(); orr = out.r2.data();
+    oi = out.image.data();
+  }
+};
+
 // Buffers for neighbour queries nested inside another's pair function (a few levels).
 class NeighborStack {
  public:
@@ -121,17 +135,8 @@ class CellList {
   template <int Dim, bool RecordImage = false>
   void gather_scan(const Particles& P, std::size_t i, Neighbors& out) const {
     const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
-    const double* __restrict px = P.x.data();
-    const double* __restrict py = P.y.data();
-    const double* __restrict pz = P.z.data();
+    const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = GatherPointers(P, out, max_candidates_);
     std::size_t n = 0;
-    out.reserve(max_candidates_);
-    std::uint32_t* __restrict oj = out.j.data();
-    double* __restrict ox = out.dx.data();
-    double* __restrict oy = out.dy.data();
-    double* __restrict oz = out.dz.data();
-    double* __restrict orr = out.r2.data();
-    std::uint8_t* __restrict oi = out.image.data();
     for_each_range(P, i, [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
       const double r2max = RecordImage ? list_r2max_ : r2max_;  // the pair list reaches radius + skin
       const std::uint8_t code = RecordImage ? image_code(sx, sy, sz) : 0;
@@ -160,17 +165,10 @@ class CellList {
   template <int Dim, bool Periodic>
   void gather_cached_with(const Particles& P, std::size_t i, Neighbors& out) const {
     const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
-    const double* __restrict px = P.x.data();
-    const double* __restrict py = P.y.data();
-    const double* __restrict pz = P.z.data();
     const std::size_t k0 = pair_start_[i], n = pair_start_[i + 1] - k0;
     const double r2max = r2max_;
-    out.reserve(n);
-    std::uint32_t* __restrict oj = out.j.data();
-    double* __restrict ox = out.dx.data();
-    double* __restrict oy = out.dy.data();
-    double* __restrict oz = out.dz.data();
-    double* __restrict orr = out.r2.data();
+    const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = GatherPointers(P, out, n);
+    (void)oi;
     const std::uint32_t* __restrict list = pair_j_.data() + k0;
     const std::uint8_t* __restrict img = Periodic ? pair_image_.data() + k0 : nullptr;
     std::size_t c = 0;
