@@ -100,18 +100,12 @@ double CellList::max_displacement2(const Particles& P) const {
   return d2;
 }
 
-bool CellList::update_pairs(const Particles& P) {
-  if (!(skin_ > 0)) return false;  // no list: queries scan the cells
-  if (pairs_current(P)) return false;
-  cache_pairs(P);
-  return true;
-}
-
 // Each thread scans a contiguous block of particles into its own list (each particle's sorted by j,
 // with its periodic image codes), then copies it to its place in the shared one: the list is the same
 // whatever the thread count.
-void CellList::cache_pairs(const Particles& P) {
+void CellList::rebuild_pairs(const Particles& P) {
   cached_ = false;
+  if (!(skin_ > 0)) return;  // no list: queries scan the cells
   const std::size_t n = P.size();
   pair_start_.assign(n + 1, 0);
   thread_pairs_.resize(static_cast<std::size_t>(omp_get_max_threads()));

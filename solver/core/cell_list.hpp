@@ -1,6 +1,7 @@
-// Cell-linked list: particles binned into cells of edge >= half the kernel support radius and
-// sorted by cell with a counting sort, O(N). Neighbour queries visit the 5^dim surrounding cells
-// (rows along x as contiguous ranges) and return minimum-image distances along periodic axes.
+// Cell-linked list: particles binned into cells of edge >= half the search reach (kernel support plus
+// the pair list's skin) and sorted by cell with a counting sort, O(N). Neighbour queries read the
+// Verlet pair list when one is kept, else visit the 5^dim surrounding cells (rows along x as
+// contiguous ranges); both return minimum-image distances along periodic axes.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -28,7 +29,7 @@ struct Box {
 struct Neighbors {
   std::vector<std::uint32_t> j;
   std::vector<double> dx, dy, dz, r2;
-  std::vector<std::uint8_t> image;  // CellList::cache_pairs only: the periodic image of j (CellList::image_code)
+  std::vector<std::uint8_t> image;  // CellList::rebuild_pairs only: the periodic image of j (CellList::image_code)
   std::size_t n = 0;
   std::size_t size() const { return n; }
   void reserve(std::size_t cap) {
@@ -78,7 +79,7 @@ class CellList {
  public:
   // Bins all particles, in cells wide enough for neighbours within radius + skin (the pair list's
   // reach; queries return those within radius). Returns the index of the first particle outside the
-  // box, or -1. Keeps the pair list (update_pairs) unless the box, radius or skin changed.
+  // box, or -1. Keeps the pair list (rebuild_pairs) unless the box, radius or skin changed.
   long build(const Particles& P, const Box& box, double radius, double skin = 0);
 
   // Particle indices in cell order; cell c holds sorted()[cell_start(c) .. cell_start(c+1)).
@@ -101,20 +102,19 @@ class CellList {
 
   // A Verlet pair list (Verlet 1967, Phys. Rev. 159, 98; with a skin as in Allen & Tildesley 1987,
   // "Computer Simulation of Liquids", sec. 5.3.1): each particle's neighbours within radius + skin,
-  // rebuilt by update_pairs only when a particle has moved more than skin/2 since the last build (no
-  // pair can then have come within radius unseen), or after a permutation. Queries read the list and
+  // and valid until a particle has moved more than skin/2 since its build (no pair can then have come
+  // within radius unseen) or the particles are permuted. Queries read the list and
   // keep the pairs within radius: a scan of the cells visits about twice the candidates it keeps.
   // Each particle's list is in ascending j, so a query's neighbours and their order do not depend on
   // when the list was built (a restarted run gives the same bits), nor on the thread count.
-  // update_pairs returns whether it rebuilt the list; with no skin (build) it keeps none.
-  bool update_pairs(const Particles& P);
+  // rebuild_pairs builds the list from the current cells (call after build); with no skin it keeps none.
+  void rebuild_pairs(const Particles& P);
   // Whether the list holds every pair within radius now (no particle moved half the skin since its
   // build); while it does, a step needs no new cells, only find_outside.
   bool pairs_current(const Particles& P) const;
   // The index of the first particle outside the box (or not finite), as build() reports it, or -1.
   long find_outside(const Particles& P, const Box& box) const;
   bool pairs_cached() const { return cached_; }
-  std::size_t cached_pair_count() const { return cached_ ? pair_j_.size() : 0; }
   long pair_list_builds() const { return list_builds_; }
 
   // f(j, dx, dy, dz, r2) for every j != i with r2 < radius^2; d = x_i - x_j (minimum image).
@@ -167,8 +167,7 @@ class CellList {
     const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
     const std::size_t k0 = pair_start_[i], n = pair_start_[i + 1] - k0;
     const double r2max = r2max_;
-    const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = GatherPointers(P, out, n);
-    (void)oi;
+    [[maybe_unused]] const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = GatherPointers(P, out, n);
     const std::uint32_t* __restrict list = pair_j_.data() + k0;
     const std::uint8_t* __restrict img = Periodic ? pair_image_.data() + k0 : nullptr;
     std::size_t c = 0;
@@ -244,7 +243,6 @@ class CellList {
   std::array<int, 3> nc_{1, 1, 1};
   std::array<double, 3> lo_{0, 0, 0}, inv_cell_{1, 1, 1}, len_{0, 0, 0};
   std::array<bool, 3> periodic_{false, false, false};
-  void cache_pairs(const Particles& P);
   static bool inside(const Box& box, const Particles& P, std::size_t i) {
     return box.contains(P.x[i], P.y[i], P.z[i]) && std::isfinite(P.x[i] + P.y[i] + P.z[i]);
   }
@@ -254,7 +252,7 @@ class CellList {
   std::size_t max_candidates_ = 0;  // the most particles a query can scan (fullest cell x stencil cells)
   bool identity_ = false;
   std::vector<std::uint32_t> start_, sorted_, cell_;
-  // cache_pairs: particle i's neighbours are pair_j_[pair_start_[i] .. pair_start_[i+1])
+  // rebuild_pairs: particle i's neighbours are pair_j_[pair_start_[i] .. pair_start_[i+1])
   bool cached_ = false, any_periodic_ = false;
   long list_builds_ = 0;
   std::vector<double> x0_, y0_, z0_;  // positions at the list's build

@@ -109,7 +109,7 @@ void Simulation::neighbour_search() {
     P_.permute(cells_.sorted());
     cells_.mark_permuted();
   }
-  cells_.update_pairs(P_);
+  cells_.rebuild_pairs(P_);
 }
 
 // The stages of the step, in order, for the modules this scene has (sim/stages.hpp). Rates: in a
