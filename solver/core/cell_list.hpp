@@ -99,6 +99,12 @@ class CellList {
     if (cached_) gather_cached<Dim>(P, i, out);
     else gather_scan<Dim>(P, i, out);
   }
+  // gather in the list's dimension (2D: out.dz is not written, read it as 0)
+  void gather_any_dim(const Particles& P, std::size_t i, Neighbors& out) const {
+    if (dim_ == 2) gather<2>(P, i, out);
+    else gather<3>(P, i, out);
+  }
+  int dim() const { return dim_; }
 
   // A Verlet pair list (Verlet 1967, Phys. Rev. 159, 98; with a skin as in Allen & Tildesley 1987,
   // "Computer Simulation of Liquids", sec. 5.3.1): each particle's neighbours within radius + skin,
@@ -120,13 +126,14 @@ class CellList {
   // f(j, dx, dy, dz, r2) for every j != i with r2 < radius^2; d = x_i - x_j (minimum image).
   // The neighbours are gathered first into a per-thread buffer, so that f has a single call site
   // and is inlined into the pair loop (called per pair from the cell scan, it was not).
+  // A pair loop with accumulators of its own should call gather_any_dim and loop over the arrays itself:
+  // through f's references the compiler keeps the accumulators in memory, not in registers.
   template <class F>
   void for_each_neighbor(const Particles& P, std::size_t i, F&& f) const {
     thread_local NeighborStack stack;
     const NeighborStack::Level level(stack);
     Neighbors& nb = level.buffer;
-    if (dim_ == 2) gather<2>(P, i, nb);
-    else gather<3>(P, i, nb);
+    gather_any_dim(P, i, nb);
     const bool flat = dim_ == 2;
     for (std::size_t k = 0; k < nb.n; ++k) f(nb.j[k], nb.dx[k], nb.dy[k], flat ? 0.0 : nb.dz[k], nb.r2[k]);
   }

@@ -96,6 +96,7 @@ void Seepage::update_porosity(Particles& P, const CellList& cells) const {
 template <class K>
 void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells) const {
   const std::size_t n = P.size();
+  const bool flat = cells.dim() == 2;  // 2D: nb.dz is not written
   double* por = P.field(SeepageFields::porosity).data();
   double* cond = P.field(SeepageFields::conductivity).data();
   // skeleton: n = 1 - rho / rho_s
@@ -117,28 +118,35 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   const double* swm = P.find(SoilWallFields::m);
   const double* swrho = P.find(SoilWallFields::rho);
   const double* vol = volumes(P);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
     if (ki != Kind::Soil && ki != Kind::Fluid) continue;
     const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
     double sum = 0, sg = 0, g[3] = {0, 0, 0}, gn[3] = {0, 0, 0};
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+    cells.gather_any_dim(P, i, nb);
+    for (std::size_t q = 0; q < nb.n; ++q) {
+      const std::uint32_t j = nb.j[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
       const Kind kj = P.kind[j];
       if (ki == Kind::Fluid && kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
         const double c = vol[j] * (por[j] - por[i]) * kernel.gradW_over_r(std::sqrt(r2));
         gn[0] += c * dx; gn[1] += c * dy; gn[2] += c * dz;
       }
       const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
-      if (kj != other && !skeleton) return;
+      if (kj != other && !skeleton) continue;
       const double Vj = skeleton && swm ? swm[j] / swrho[j] : vol[j];
       const double r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
       if (kj == other) sum += Vj * W;
       if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
-    });
+    }
     S[i] = sum;
     Sg[i] = sg;
     for (int a = 0; a < 3; ++a) { G[a][i] = g[a]; GN[a][i] = gn[a]; }
+  }
   }
 }
 
@@ -174,22 +182,29 @@ void Seepage::porosity_rate(Particles& P, const CellList& cells) const {
 template <class K>
 void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& cells) const {
   const std::size_t n = P.size();
+  const bool flat = cells.dim() == 2;  // 2D: nb.dz is not written
   const double* por = P.field(SeepageFields::porosity).data();
   double* dn = P.field(SeepageFields::porosity_rate).data();
   const double* vol = volumes(P);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
     double sW = 0, sv[3] = {0, 0, 0}, dv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, g[3] = {0, 0, 0};
     double gn[3] = {0, 0, 0};
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+    cells.gather_any_dim(P, i, nb);
+    for (std::size_t q = 0; q < nb.n; ++q) {
+      const std::uint32_t j = nb.j[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
       const Kind kj = P.kind[j];
-      if (kj != Kind::Soil && kj != Kind::Fluid && kj != Kind::DummyWall) return;  // walls: skeleton at rest
+      if (kj != Kind::Soil && kj != Kind::Fluid && kj != Kind::DummyWall) continue;  // walls: skeleton at rest
       const double r = std::sqrt(r2), Vj = vol[j], fw = kernel.gradW_over_r(r);
       const double gr[3] = {fw * dx, fw * dy, fw * dz};
       if (kj == Kind::Fluid) {
         for (int a = 0; a < 3; ++a) gn[a] += Vj * (por[j] - por[i]) * gr[a];
-        return;
+        continue;
       }
       const double W = kernel.W(r), v[3] = {P.vx[j], P.vy[j], P.vz[j]};
       sW += Vj * W;
@@ -198,12 +213,13 @@ void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& 
         g[a] += Vj * gr[a];
         for (int b = 0; b < 3; ++b) dv[a][b] += Vj * v[a] * gr[b];
       }
-    });
+    }
     if (sW <= 0) { dn[i] = 0; continue; }
     const double vs[3] = {sv[0] / sW, sv[1] / sW, sv[2] / sW};
     const double div_vs = (dv[0][0] - vs[0] * g[0]) + (dv[1][1] - vs[1] * g[1]) + (dv[2][2] - vs[2] * g[2]);
     const double w[3] = {P.vx[i] - vs[0], P.vy[i] - vs[1], P.vz[i] - vs[2]};
     dn[i] = (1.0 - por[i]) * div_vs + w[0] * gn[0] + w[1] * gn[1] + w[2] * gn[2];
+  }
   }
 }
 
@@ -223,6 +239,7 @@ void Seepage::apply(Particles& P, const CellList& cells) const {
 template <class K>
 void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) const {
   const std::size_t n = P.size();
+  const bool flat = cells.dim() == 2;  // 2D: nb.dz is not written
   const double* por = P.field(SeepageFields::porosity).data();
   const double* cond = P.field(SeepageFields::conductivity).data();
   const double* S = P.field(SeepageFields::other_phase_sum).data();
@@ -264,13 +281,19 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   //    correction everywhere the Terzaghi isochrone error rose from 0.013 to 0.068 at H/dx = 20) and
   //    (b) where the water has a full support (at a water free surface the missing neighbours stand for
   //    the drained p = 0, which the plain sums already express).
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (!saturated(i)) continue;
     double fp[3] = {0, 0, 0}, k[3] = {0, 0, 0}, sp = 0, sw = 0, jump = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+    cells.gather_any_dim(P, i, nb);
+    for (std::size_t q = 0; q < nb.n; ++q) {
+      const std::uint32_t j = nb.j[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
       const Kind kj = P.kind[j];
-      if (kj != Kind::Fluid && kj != Kind::DummyWall) return;
+      if (kj != Kind::Fluid && kj != Kind::DummyWall) continue;
       const double r = std::sqrt(r2), Vj = vol[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
       const double w_over_s = kj == Kind::Fluid && Sg[j] > 0 ? W / Sg[j] : 0.0;  // walls: no porosity rate
       const double phi = Vj * (1.0 - por[j]), vn = kj == Kind::Fluid ? Vj * w_over_s : 0.0;
@@ -281,12 +304,13 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
       sp += Vj * W * P.p[j];
       sw += Vj * W;
       if (kj == Kind::Fluid) jump = std::max(jump, std::abs(por[j] - por[i]));
-    });
+    }
     const double gauge = std::clamp((jump - kJumpFrom) / (kJumpFull - kJumpFrom), 0.0, 1.0);
     const double p_ref = sw >= kFullSupport ? gauge * sp / sw : 0.0;
     P.ax[i] -= (fp[0] - p_ref * k[0]) / P.rho[i];
     P.ay[i] -= (fp[1] - p_ref * k[1]) / P.rho[i];
     P.az[i] -= (fp[2] - p_ref * k[2]) / P.rho[i];
+  }
   }
   // 2. drag: each particle's rate C_i = sum_j c_ij and its partner phase's c-weighted velocity,
   //    acceleration (without drag) and partial density, for the implicit update in Simulation::kick.
@@ -297,7 +321,10 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   double* bs = beta_.data();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) bs[i] = saturated(i) ? beta(i) : 0.0;
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
     C[i] = 0;
@@ -305,23 +332,27 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
     const bool soil_i = ki == Kind::Soil;
     const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
     double c = 0, sv[3] = {0, 0, 0}, sa[3] = {0, 0, 0}, sr = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double, double, double, double r2) {
+    cells.gather_any_dim(P, i, nb);
+    for (std::size_t q = 0; q < nb.n; ++q) {
+      const std::uint32_t j = nb.j[q];
+      const double r2 = nb.r2[q];
       const double b = soil_i ? (P.kind[j] == Kind::Fluid ? bi : 0.0) : bs[j];  // the pair's skeleton beta
-      if (!(b > 0)) return;
+      if (!(b > 0)) continue;
       const double cij = b * vol[j] * kernel.W(std::sqrt(r2)) * 2.0 / ((Si + S[j]) * rhoi);
       c += cij;
       sv[0] += cij * P.vx[j]; sv[1] += cij * P.vy[j]; sv[2] += cij * P.vz[j];
       if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner
         sr += cij * kImmovable;
-        return;
+        continue;
       }
       sa[0] += cij * P.ax[j]; sa[1] += cij * P.ay[j]; sa[2] += cij * P.az[j];
       sr += cij * P.rho[j];
-    });
+    }
     C[i] = c;
     if (c <= 0) continue;
     for (int a = 0; a < 3; ++a) { pv[a][i] = sv[a] / c; pa[a][i] = sa[a] / c; }
     prho[i] = sr / c;
+  }
   }
 }
 

@@ -107,9 +107,6 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const std::size_t n = P.size();
   const StressView sv(P);
   double* eps_p = P.field(SoilFields::plastic_strain).data();
-  const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
-  const double* wvy = P.find(SoilWallFields::vy);
-  const double* wvz = P.find(SoilWallFields::vz);
   gather_soil_view(P);
   const double* mass = mass_.data();
   const double* dens = rho_.data();
@@ -117,27 +114,33 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
   const int dim = scene_.dim;
-#pragma omp parallel for schedule(dynamic, 256)
+  const Kind* kind = P.kind.data();
+  const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
+  const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    const Kind ki = P.kind[i];
+    const Kind ki = kind[i];
     if (!is_solid(ki)) continue;
-    const double vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
+    const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double drho = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
-      const Kind kj = P.kind[j];
-      if (!continuum_pair(ki, kj)) return;
-      const double fw = kernel.gradW_over_r(std::sqrt(r2));
+    cells.gather<Dim>(P, i, nb);
+    const std::size_t nn = nb.size();
+    for (std::size_t k = 0; k < nn; ++k) {
+      const std::uint32_t j = nb.j[k];
+      const Kind kj = kind[j];
+      if (!continuum_pair(ki, kj)) continue;
+      const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0;
+      const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k]));
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
-      const bool wall = kj == Kind::DummyWall;
       const double mj = mass[j], Vj = mj / dens[j];
       // continuity with the wall's own (prescribed) velocity
-      drho += mj * ((vxi - P.vx[j]) * grad[0] + (vyi - P.vy[j]) * grad[1] + (vzi - P.vz[j]) * grad[2]);
-      double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
-      if (wall && wvx) {  // the wall's ghost velocity (boundary/soil_wall.cpp)
-        vj[0] = wvx[j]; vj[1] = wvy[j]; vj[2] = wvz[j];
-      }
-      const double dv[3] = {vj[0] - vxi, vj[1] - vyi, vj[2] - vzi};
+      drho += mj * ((vxi - vx[j]) * grad[0] + (vyi - vy[j]) * grad[1] + (vzi - vz[j]) * grad[2]);
+      // the velocity gradient with the walls' ghost velocity (boundary/soil_wall.cpp)
+      const double dv[3] = {gvx[j] - vxi, gvy[j] - vyi, Dim == 3 ? gvz[j] - vzi : 0.0};
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) L[a][b] += Vj * dv[a] * grad[b];
       if (correct) {
@@ -145,7 +148,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b) B[a][b] += Vj * rji[a] * grad[b];
       }
-    });
+    }
     if (correct) {
       // L <- L B^-1 on the in-plane block (B is the identity for a full, regular support)
       Eigen::Matrix3d Bm = Eigen::Matrix3d::Identity(), Lm = Eigen::Matrix3d::Zero();
@@ -187,6 +190,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
     eps_p[i] += eq_plastic;
     P.p[i] = -stress.trace() / 3.0;
   }
+  }
   const auto diagnose = [&](long which, const std::string& what) {
     const auto i = static_cast<std::size_t>(which);
     Diagnosis d;
@@ -210,13 +214,23 @@ void SoilForces::gather_soil_view(const Particles& P) const {
   const std::size_t n = P.size();
   mass_.resize(n);
   rho_.resize(n);
+  ghost_vx_.resize(n);
+  ghost_vy_.resize(n);
+  ghost_vz_.resize(n);
   const double* wm = P.find(SoilWallFields::m);
   const double* wrho = P.find(SoilWallFields::rho);
+  const double* wvx = P.find(SoilWallFields::vx);
+  const double* wvy = P.find(SoilWallFields::vy);
+  const double* wvz = P.find(SoilWallFields::vz);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const bool ghost = wm && P.kind[i] == Kind::DummyWall;
+    const bool wall = P.kind[i] == Kind::DummyWall;
+    const bool ghost = wm && wall, ghost_v = wvx && wall;
     mass_[i] = ghost ? wm[i] : P.m[i];
     rho_[i] = ghost ? wrho[i] : P.rho[i];
+    ghost_vx_[i] = ghost_v ? wvx[i] : P.vx[i];
+    ghost_vy_[i] = ghost_v ? wvy[i] : P.vy[i];
+    ghost_vz_[i] = ghost_v ? wvz[i] : P.vz[i];
   }
 }
 
@@ -255,17 +269,24 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
   const double w_dx = kernel.W(scene_.dx);
-  const double* wvx = P.find(SoilWallFields::vx);  // the soil's ghost values at walls (boundary/soil_wall.hpp)
-  const double* wvy = P.find(SoilWallFields::vy);
-  const double* wvz = P.find(SoilWallFields::vz);
   gather_soil_view(P);
   prepare_pair_terms(P);
   const double* mass = mass_.data();
   const double* dens = rho_.data();
   const double* cw = has_pressure_dependent_ ? P.field(SoilFields::wave_speed).data() : nullptr;
-#pragma omp parallel for schedule(dynamic, 256)
+  const Kind* kind = P.kind.data();
+  const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
+  const auto* S = S_.data();
+  const auto* R = R_.data();
+  // the stress components the acceleration reads: xx yy xy in 2D, all six in 3D
+  constexpr int kComponents[6] = {0, 1, 3, 2, 4, 5};
+  constexpr int nc = Dim == 3 ? 6 : 3;
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    const Kind ki = P.kind[i];
+    const Kind ki = kind[i];
     if (!is_solid(ki)) continue;
     const SoilMaterial& mi = scene_.soils[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
@@ -274,37 +295,41 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     const double n_as = mi.artificial_stress_exponent;
     const bool n_is_4 = n_as == 4.0;
     const bool use_as = mi.artificial_stress > 0;
-    const auto& Si = S_[i];
-    const auto& Ri = R_[i];
+    const auto& Si = S[i];
+    const auto& Ri = R[i];
     double ax = 0, ay = 0, az = 0;
-    cells.for_each_neighbor(P, i, [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
-      const Kind kj = P.kind[j];
-      if (!continuum_pair(ki, kj)) return;
+    cells.gather<Dim>(P, i, nb);
+    const std::size_t nn = nb.size();
+    for (std::size_t k = 0; k < nn; ++k) {
+      const std::uint32_t j = nb.j[k];
+      const Kind kj = kind[j];
+      if (!continuum_pair(ki, kj)) continue;
+      const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0, r2 = nb.r2[k];
       const double r = std::sqrt(r2);
       const double fw = kernel.gradW_over_r(r);
       const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
       const bool wall = kj == Kind::DummyWall;
       const double mj = mass[j], rhoj = dens[j];
-      const auto& Sj = S_[j];
+      const auto& Sj = S[j];
       double T[6];
-      for (int c = 0; c < 6; ++c) T[c] = Si[c] + Sj[c];
+      for (int c = 0; c < nc; ++c) T[kComponents[c]] = Si[kComponents[c]] + Sj[kComponents[c]];
       if (use_as) {
         const double ratio = kernel.W(r) / w_dx;
         const double f = n_is_4 ? (ratio * ratio) * (ratio * ratio) : std::pow(ratio, n_as);
-        const auto& Rj = R_[j];
-        for (int c = 0; c < 6; ++c) T[c] += f * (Ri[c] + Rj[c]);
+        const auto& Rj = R[j];
+        for (int c = 0; c < nc; ++c) T[kComponents[c]] += f * (Ri[kComponents[c]] + Rj[kComponents[c]]);
       }
       {
         // Monaghan's artificial viscosity for approaching pairs, as a select (the sign of v.r is a coin
-        // flip, a branch on it was mispredicted half the time)
-        const bool ghost = wall && wvx;
-        const double ux = vxi - (ghost ? wvx[j] : P.vx[j]), uy = vyi - (ghost ? wvy[j] : P.vy[j]);
-        const double uz = Dim == 3 ? vzi - (ghost ? wvz[j] : P.vz[j]) : 0.0;
+        // flip, a branch on it was mispredicted half the time); walls with the soil's ghost velocity
+        const double ux = vxi - gvx[j], uy = vyi - gvy[j];
+        const double uz = Dim == 3 ? vzi - gvz[j] : 0.0;
         const double vr = std::min(Dim == 3 ? ux * dx + uy * dy + uz * dz : ux * dx + uy * dy, 0.0);
         const double mu = h * vr / (r2 + eta2);
         const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
         const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
-        T[0] -= Pi; T[1] -= Pi; T[2] -= Pi;
+        T[0] -= Pi; T[1] -= Pi;
+        if constexpr (Dim == 3) T[2] -= Pi;
       }
       // (T . grad W)_a with T symmetric: components xx yy zz xy xz yz
       if constexpr (Dim == 3) {
@@ -312,13 +337,15 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         ay += mj * (T[3] * gx + T[1] * gy + T[5] * gz);
         az += mj * (T[4] * gx + T[5] * gy + T[2] * gz);
       } else {
+        (void)gz;
         ax += mj * (T[0] * gx + T[3] * gy);
         ay += mj * (T[3] * gx + T[1] * gy);
       }
-    });
+    }
     P.ax[i] = ax + g[0] + scene_.body_force[0];
     P.ay[i] = ay + g[1] + scene_.body_force[1];
     P.az[i] = az + g[2] + scene_.body_force[2];
+  }
   }
 }
 

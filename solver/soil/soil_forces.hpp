@@ -54,10 +54,11 @@ class SoilForces {
                           double time) const;
   template <int Dim, class K>
   void momentum_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  // Mass, density and velocity as the soil's sums see them: the soil walls' ghost values at dummy
+  // particles (boundary/soil_wall.hpp), the particles' own elsewhere; one pass instead of a choice per pair.
+  void gather_soil_view(const Particles& P) const;
+  // S = sigma/rho^2 and artificial stress R per particle
   void prepare_pair_terms(Particles& P) const;
-  // Mass and density as the soil's sums see them: the soil walls' ghost values at dummy particles
-  // (boundary/soil_wall.hpp), the particles' own elsewhere; one pass instead of a choice per pair.
-  void gather_soil_view(const Particles& P) const;  // S = sigma/rho^2 and artificial stress R per particle
 
   // The models' state fields per material.
   std::vector<materials::SolidState> bind_states(Particles& P) const;
@@ -69,8 +70,8 @@ class SoilForces {
   std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
   mutable double max_wave_speed_ = 0;
-  mutable std::vector<std::array<double, 6>> S_, R_;
-  mutable std::vector<double> mass_, rho_;  // xx yy zz xy xz yz
+  mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
+  mutable std::vector<double> mass_, rho_, ghost_vx_, ghost_vy_, ghost_vz_;
 };
 
 }  // namespace geosph
