@@ -16,8 +16,9 @@ const bool documented = register_section(
       number_doc("artificial_viscosity", Range::between(0, 1), "0", "-", "Monaghan alpha"),
       number_doc("kinematic_viscosity", Range::non_negative(), "0", "m^2/s", "laminar viscosity nu (Morris et al. 1997)"),
       number_doc("density_diffusion", Range::between(0, 1), "0", "-", "delta-SPH coefficient (Molteni & Colagrossi 2009)"),
-      {"density_diffusion_hydrostatic", FieldType::Boolean, "true, false", "false", "-",
-       "diffuse the dynamic density only (Fourtakas et al. 2019): keeps a resting column's pressure"}}});
+      {"density_diffusion_hydrostatic", FieldType::Boolean, "true, false", "true", "-",
+       "diffuse the dynamic density only (Fourtakas et al. 2019, eq. 17): keeps a resting column's pressure; "
+       "false: plain delta-SPH, which diffuses the hydrostatic gradient and lets the base pressure fall"}}});
 }  // namespace
 
 std::vector<std::string> fluid_model_names() { return {"tait_fluid"}; }
@@ -32,7 +33,7 @@ FluidMaterial parse_fluid_material(const JsonFields& f, const std::string& name)
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.0);
   m.kinematic_viscosity = f.number("kinematic_viscosity", Range::non_negative(), 0.0);
   m.density_diffusion = f.number("density_diffusion", Range::between(0, 1), 0.0);
-  m.density_diffusion_hydrostatic = f.boolean("density_diffusion_hydrostatic", false);
+  m.density_diffusion_hydrostatic = f.boolean("density_diffusion_hydrostatic", true);
   f.reject_unknown();
   return m;
 }

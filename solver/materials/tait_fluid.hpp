@@ -20,7 +20,7 @@ struct FluidMaterial {
   // the diffusion acts on the dynamic density only, less the hydrostatic difference of each pair
   // (Fourtakas et al. 2019, Comput. Fluids 190, 346-361, eq. 17); the plain form flattens the
   // hydrostatic density gradient: a resting water column loses pressure at its base over time
-  bool density_diffusion_hydrostatic = false;
+  bool density_diffusion_hydrostatic = true;
 };
 
 // The fluid models (one today); materials.<name> of a fluid model.
