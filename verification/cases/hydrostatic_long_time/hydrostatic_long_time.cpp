@@ -6,12 +6,12 @@
 // (density_diffusion_hydrostatic: false) is recorded unscored beside them.
 
 #include <cmath>
-#include <map>
 #include <string>
 
 #include "analytical/hydrostatic_tait.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
+#include "harness/hydrostatic_profile.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -85,32 +85,18 @@ Record run_column(const CaseConfig& base, const CaseContext& ctx, const std::str
   }, ctx.progress);
 
   if (ok && samples > 0) {
-    std::vector<double> p_sim, p_ref;
+    HydrostaticProfile profile(ref, scene.dx);
     double floor_sim = 0, floor_ref = 0;
-    std::map<long, std::pair<double, int>> rows;
     for (std::size_t k = 0; k < n; ++k) {
       if (psum[k] == 0 && ysum[k] == 0) continue;
       const double p = psum[k] / samples, y = ysum[k] / samples;
-      p_sim.push_back(p);
-      p_ref.push_back(ref.pressure(y));
+      profile.add(p, y);
       if (y < scene.dx) { floor_sim += p; floor_ref += ref.pressure(y); }
-      auto& r = rows[std::lround(y / scene.dx)];
-      r.first += p; r.second += 1;
     }
-    add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(p_sim, p_ref));
+    add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(profile.simulated(), profile.reference()));
     add_case_metric(rec, cfg, "base_pressure_error", std::abs(floor_sim / floor_ref - 1.0), floor_ref > 0);
-    Series sim_s{"SPH (row mean)", "simulation", "pressure", "depth below settled surface [m]", "pressure [Pa]", {}, {}};
-    for (const auto& [row, acc] : rows) {
-      sim_s.x.push_back(ref.surface_height() - row * scene.dx);
-      sim_s.y.push_back(acc.first / acc.second);
-    }
-    Series ana{"hydrostatic (Tait)", "analytical", "pressure", sim_s.xlabel, sim_s.ylabel, {}, {}};
-    for (int k = 0; k <= 50; ++k) {
-      const double d = ref.surface_height() * k / 50.0;
-      ana.x.push_back(d);
-      ana.y.push_back(ref.pressure_at_depth(d));
-    }
-    rec.series = {sim_s, ana, base_hist};
+    rec.series = profile.series();
+    rec.series.push_back(base_hist);
   } else {
     add_case_metric(rec, cfg, "pressure_rel_l2", 0.0, false);
     add_case_metric(rec, cfg, "base_pressure_error", 0.0, false);

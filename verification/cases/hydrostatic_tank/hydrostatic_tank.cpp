@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "analytical/hydrostatic_tait.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
+#include "harness/hydrostatic_profile.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 
@@ -47,17 +47,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   }, ctx.progress);
 
   if (ok && samples > 0) {
-    std::vector<double> p_sim, p_ref;
-    std::map<long, std::pair<double, int>> rows;  // binned by dx for the plot
-    for (std::size_t k = 0; k < n; ++k) {
-      if (psum[k] == 0 && ysum[k] == 0) continue;
-      const double p = psum[k] / samples, y = ysum[k] / samples;
-      p_sim.push_back(p);
-      p_ref.push_back(ref.pressure(y));
-      auto& r = rows[std::lround(y / scene.dx)];
-      r.first += p; r.second += 1;
-    }
-    add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(p_sim, p_ref));
+    HydrostaticProfile profile(ref, scene.dx);
+    for (std::size_t k = 0; k < n; ++k)
+      if (psum[k] != 0 || ysum[k] != 0) profile.add(psum[k] / samples, ysum[k] / samples);
+    add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(profile.simulated(), profile.reference()));
 
     long leaked = 0;
     const auto& P = sim.particles();
@@ -66,19 +59,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     add_case_metric(rec, cfg, "leaked_particles", static_cast<double>(leaked));
     // spurious currents, recorded for information (no published bound to test against)
     rec.extra["max_speed_over_sqrt_gH"] = vmax_window[0] / std::sqrt(g * H0);
-
-    Series sim_s{"SPH (row mean)", "simulation", "pressure", "depth below settled surface [m]", "pressure [Pa]", {}, {}};
-    for (const auto& [row, acc] : rows) {
-      sim_s.x.push_back(ref.surface_height() - row * scene.dx);
-      sim_s.y.push_back(acc.first / acc.second);
-    }
-    Series ana{"hydrostatic (Tait)", "analytical", "pressure", sim_s.xlabel, sim_s.ylabel, {}, {}};
-    for (int k = 0; k <= 50; ++k) {
-      const double d = ref.surface_height() * k / 50.0;
-      ana.x.push_back(d);
-      ana.y.push_back(ref.pressure_at_depth(d));
-    }
-    rec.series = {sim_s, ana};
+    rec.series = profile.series();
     rec.extra["settled_surface_height_m"] = ref.surface_height();
   } else {
     add_case_metric(rec, cfg, "pressure_rel_l2", 0.0, false);
