@@ -4,6 +4,8 @@
 #include "boundary/dummy_wall.hpp"
 #include "coupling/seepage_fields.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
@@ -74,6 +76,44 @@ void FluidForces::correct_density(Particles& P, double dt_predicted) const {
   }
 }
 
+// The renormalised gradient of the water's intrinsic density rho/n at each fluid particle (Antuono,
+// Colagrossi, Marrone & Molteni 2010, Comput. Phys. Commun. 181, eq. 7; Randles & Libersky 1996):
+// grad rho_i = (sum_j V_j (x_j - x_i) (x) grad W_ij)^-1 sum_j V_j (rho_j - rho_i) grad W_ij, over water.
+template <int Dim, class K>
+void FluidForces::density_gradients(const K& kernel, const Particles& P, const CellList& cells, const double* por) const {
+  const std::size_t n = P.size();
+  for (auto& a : grad_rho_) a.assign(n, 0.0);
+  double *gx = grad_rho_[0].data(), *gy = grad_rho_[1].data(), *gz = grad_rho_[2].data();
+  const Kind* kind = P.kind.data();
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind[i] != Kind::Fluid) continue;
+    const double ri = por ? P.rho[i] / por[i] : P.rho[i];
+    Eigen::Matrix<double, Dim, Dim> M = Eigen::Matrix<double, Dim, Dim>::Zero();
+    Eigen::Matrix<double, Dim, 1> G = Eigen::Matrix<double, Dim, 1>::Zero();
+    cells.gather<Dim>(P, i, nb);
+    for (std::size_t k = 0; k < nb.size(); ++k) {
+      const std::uint32_t j = nb.j[k];
+      if (kind[j] != Kind::Fluid) continue;
+      const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k])), Vj = P.m[j] / P.rho[j];
+      const double rj = por ? P.rho[j] / por[j] : P.rho[j];
+      const double r[3] = {nb.dx[k], nb.dy[k], Dim == 3 ? nb.dz[k] : 0.0};  // x_i - x_j
+      for (int a = 0; a < Dim; ++a) {
+        G(a) += Vj * (rj - ri) * fw * r[a];
+        for (int b = 0; b < Dim; ++b) M(a, b) -= Vj * r[a] * fw * r[b];
+      }
+    }
+    const Eigen::Matrix<double, Dim, 1> gr = std::abs(M.determinant()) > 1e-3 ? Eigen::Matrix<double, Dim, 1>(M.inverse() * G)
+                                                                               : Eigen::Matrix<double, Dim, 1>::Zero();
+    gx[i] = gr(0); gy[i] = gr(1);
+    if constexpr (Dim == 3) gz[i] = gr(2);
+  }
+  }
+}
+
 // Continuity, delta-SPH and momentum in one neighbour pass: each fluid particle gathers its own sums
 // (no scatter, so the result does not depend on the thread count).
 template <int Dim, bool MixedSlip, bool Porous, class K>
@@ -104,6 +144,12 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
     vol[i] = P.m[i] / P.rho[i];
   }
   const double* por = Porous ? porosity(P) : nullptr;
+  // pore water: delta-SPH less the linear part of the density field (Antuono et al. 2010), so that a
+  // smooth pore-pressure profile is not diffused: plain or hydrostatic delta-SPH drained a consolidating
+  // layer through the water's numerical diffusion, delta h c0, which rivals c_v = k M / gamma_w at low k
+  const bool consistent = Porous && std::any_of(mats_.begin(), mats_.end(), [](const auto& m) { return m.density_diffusion > 0; });
+  if (consistent) density_gradients<Dim>(kernel, P, cells, por);
+  const double *grx = grad_rho_[0].data(), *gry = grad_rho_[1].data(), *grz = grad_rho_[2].data();
   const Kind* kind = P.kind.data();
   const double *m = P.m.data(), *rho = P.rho.data(), *p = P.p.data();
   const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
@@ -163,8 +209,10 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
         // intrinsic density (rho/n), scaled back by n_i
         double d = rhoi - (Porous ? ni * rhoj / por[j] : rhoj);
         // hydrostatic pair difference rho^H_i - rho^H_j from p_i - p_j = rho0 g . r_ij through the Tait
-        // equation (Fourtakas et al. 2019, eq. 17)
-        if (hydrostatic) d -= ni * eos.hydrostatic_density_difference(dot(g[0], g[1], g[2], dx, dy, dz));
+        // equation (Fourtakas et al. 2019, eq. 17); pore water: the renormalised gradients' linear part,
+        // rho_i - rho_j - (grad rho_i + grad rho_j) . r_ij / 2 (Antuono et al. 2010, eq. 6)
+        if (consistent) d -= ni * 0.5 * dot(grx[i] + grx[j], gry[i] + gry[j], grz[i] + grz[j], dx, dy, dz);
+        else if (hydrostatic) d -= ni * eos.hydrostatic_density_difference(dot(g[0], g[1], g[2], dx, dy, dz));
         const double diff = delta_hc * 2.0 * d * fw * r2 * inv_r2 * vol[j];
         drho += wall ? 0.0 : diff;
       }

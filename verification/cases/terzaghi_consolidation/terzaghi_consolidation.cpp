@@ -122,8 +122,26 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
+// case.json "variants": the layer's permeability (so c_v) and the run's end; a variant's own "levels"
+// entry, if any, replaces the case's spacings (the slow low-c_v runs at fewer of them).
 std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std::string& case_name) {
-  return run_each_spacing(ctx, case_name, run_at);
+  const CaseConfig base = load_case(ctx, case_name);
+  std::vector<Record> out;
+  for (const auto& [name, v] : base.spec.at("variants").items()) {
+    CaseConfig cfg = base;
+    cfg.scene_json["materials"]["clay"]["hydraulic_conductivity"] = v.at("hydraulic_conductivity");
+    cfg.scene_json["time"]["end"] = v.at("t_end");
+    if (v.contains("levels") && v["levels"].contains(ctx.level)) cfg.level = v["levels"][ctx.level];
+    if (cfg.level.contains("dx") && cfg.level["dx"].empty()) continue;  // not run at this level
+    std::vector<Record> runs;
+    for (double dx : cfg.level_numbers("dx")) {
+      runs.push_back(run_at(cfg, ctx, dx));
+      runs.back().variant = name;
+    }
+    annotate_observed_order(runs, cfg.spec.value("expected_order", -1.0));
+    out.insert(out.end(), runs.begin(), runs.end());
+  }
+  return out;
 }
 
 GEOSPH_CASE_DRIVER(terzaghi_consolidation, run_terzaghi_consolidation);
