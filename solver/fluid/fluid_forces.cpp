@@ -80,7 +80,8 @@ void FluidForces::correct_density(Particles& P, double dt_predicted) const {
 // Colagrossi, Marrone & Molteni 2010, Comput. Phys. Commun. 181, eq. 7; Randles & Libersky 1996):
 // grad rho_i = (sum_j V_j (x_j - x_i) (x) grad W_ij)^-1 sum_j V_j (rho_j - rho_i) grad W_ij, over water.
 template <int Dim, class K>
-void FluidForces::density_gradients(const K& kernel, const Particles& P, const CellList& cells, const double* por) const {
+void FluidForces::density_gradients(const K& kernel, const Particles& P, const CellList& cells, const double* por,
+                                    const double* vol) const {
   const std::size_t n = P.size();
   for (auto& a : grad_rho_) a.assign(n, 0.0);
   double *gx = grad_rho_[0].data(), *gy = grad_rho_[1].data(), *gz = grad_rho_[2].data();
@@ -98,7 +99,7 @@ void FluidForces::density_gradients(const K& kernel, const Particles& P, const C
     for (std::size_t k = 0; k < nb.size(); ++k) {
       const std::uint32_t j = nb.j[k];
       if (kind[j] != Kind::Fluid) continue;
-      const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k])), Vj = P.m[j] / P.rho[j];
+      const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k])), Vj = vol[j];
       const double rj = por ? P.rho[j] / por[j] : P.rho[j];
       const double r[3] = {nb.dx[k], nb.dy[k], Dim == 3 ? nb.dz[k] : 0.0};  // x_i - x_j
       for (int a = 0; a < Dim; ++a) {
@@ -148,7 +149,7 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
   // smooth pore-pressure profile is not diffused: plain or hydrostatic delta-SPH drained a consolidating
   // layer through the water's numerical diffusion, delta h c0, which rivals c_v = k M / gamma_w at low k
   const bool consistent = Porous && std::any_of(mats_.begin(), mats_.end(), [](const auto& m) { return m.density_diffusion > 0; });
-  if (consistent) density_gradients<Dim>(kernel, P, cells, por);
+  if (consistent) density_gradients<Dim>(kernel, P, cells, por, vol);
   const double *grx = grad_rho_[0].data(), *gry = grad_rho_[1].data(), *grz = grad_rho_[2].data();
   const Kind* kind = P.kind.data();
   const double *m = P.m.data(), *rho = P.rho.data(), *p = P.p.data();

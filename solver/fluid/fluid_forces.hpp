@@ -48,7 +48,9 @@ class FluidForces {
   // porosity of the pore water (two-phase scenes, coupling/seepage.hpp), else null
   const double* porosity(const Particles& P) const;
   template <int Dim, class K>
-  void density_gradients(const K& kernel, const Particles& P, const CellList& cells, const double* por) const;
+  // vol: m / rho of every particle
+  void density_gradients(const K& kernel, const Particles& P, const CellList& cells, const double* por,
+                         const double* vol) const;
   mutable std::array<std::vector<double>, 3> grad_rho_;
 
   const Scene& scene_;

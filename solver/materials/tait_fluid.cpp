@@ -18,7 +18,8 @@ const bool documented = register_section(
       number_doc("density_diffusion", Range::between(0, 1), "0", "-", "delta-SPH coefficient (Molteni & Colagrossi 2009)"),
       {"density_diffusion_hydrostatic", FieldType::Boolean, "true, false", "true", "-",
        "diffuse the dynamic density only (Fourtakas et al. 2019, eq. 17): keeps a resting column's pressure; "
-       "false: plain delta-SPH, which diffuses the hydrostatic gradient and lets the base pressure fall"}}});
+       "false: plain delta-SPH, which diffuses the hydrostatic gradient and lets the base pressure fall. "
+       "Pore water (two-phase scenes) ignores it: its delta-SPH subtracts the density's linear part (Antuono et al. 2010)"}}});
 }  // namespace
 
 std::vector<std::string> fluid_model_names() { return {"tait_fluid"}; }

@@ -19,7 +19,9 @@ struct FluidMaterial {
   double density_diffusion = 0;       // delta-SPH coefficient delta (Molteni & Colagrossi 2009)
   // the diffusion acts on the dynamic density only, less the hydrostatic difference of each pair
   // (Fourtakas et al. 2019, Comput. Fluids 190, 346-361, eq. 17); the plain form flattens the
-  // hydrostatic density gradient: a resting water column loses pressure at its base over time
+  // hydrostatic density gradient: a resting water column loses pressure at its base over time.
+  // Pore water (two-phase) ignores it: its diffusion subtracts the density's linear part instead
+  // (fluid/fluid_forces.cpp, Antuono et al. 2010)
   bool density_diffusion_hydrostatic = true;
 };
 
