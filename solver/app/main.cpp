@@ -104,6 +104,12 @@ int cmd_run(const RunOptions& o) {
   std::fprintf(stderr, "geosph run: %s, %zu fluid + %zu soil + %zu structure + %zu wall particles, %s kernel, %d thread(s)\n",
                scene.name.c_str(), sim.fluid_count(), sim.soil_count(), sim.structure_count(),
                sim.particles().size() - sim.moving_count(), kernel_name(scene.kernel).c_str(), omp_get_max_threads());
+  for (std::size_t k = 0; k < sim.fills().size(); ++k) {  // the fill against the shape's own measure
+    const BodyFill& f = sim.fills()[k];
+    std::fprintf(stderr, "  bodies[%zu]: %zu particles, mass %.6g kg%s (density x %s %.6g: %+.2f%%)\n", k, f.particles, f.mass,
+                 scene.dim == 2 ? "/m" : "", scene.dim == 2 ? "area" : "volume", f.shape_mass,
+                 f.shape_mass > 0 ? 100.0 * (f.mass / f.shape_mass - 1.0) : 0.0);
+  }
   if (restarted_from.empty()) {
     out.write(sim.particles(), sim.time(), sim.steps());
   } else {

@@ -1,5 +1,6 @@
 #include "boundary/body_input.hpp"
 
+#include "geometry/shape_input.hpp"
 #include "io/scene_reference.hpp"
 #include "materials/model_list.hpp"
 
@@ -10,9 +11,11 @@ namespace {
 const bool documented =
     register_section({"bodies", "bodies[k]", "A body of one material filled with particles on the dx lattice.",
                       {{"material", FieldType::Text, "a key of materials", "required", "-", "the body's material"},
-                       choice_doc("shape", {"box"}, "required", "the body's shape (min..max)"),
-                       {"min", FieldType::Vector, "dimension numbers", "required", "m", "lower corner of the box"},
-                       {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "upper corner of the box"},
+                       {"shape", FieldType::Text, "\"box\" (min..max) or a shape object (see shape)", "required", "-",
+                        "the body's shape; a box fills its own lattice from min, a shape object the points (i + 1/2) dx inside it"},
+                       {"min", FieldType::Vector, "dimension numbers", "required with \"box\"", "m", "lower corner of the box"},
+                       {"max", FieldType::Vector, "dimension numbers, > min", "required with \"box\"", "m",
+                        "upper corner of the box"},
                        choice_doc("initial", {"rest", "hydrostatic", "geostatic", "isotropic"}, "rest",
                                   "initial state: rest (rho0), hydrostatic (fluid, Tait), geostatic (soil: sigma_v = "
                                   "rho g depth, sigma_h = K0 sigma_v), isotropic (soil: sigma = -pressure I)"),
@@ -40,7 +43,7 @@ const bool documented_motion = register_section(
     {"bodies.motion", "bodies[k].motion", "Prescribed rigid motion of a structure: translation and rotation about a centre.",
      {{"velocity", FieldType::Vector, "dimension numbers", "[0, 0(, 0)]", "m/s", "velocity of the reference point"},
       number_doc("angular_velocity", Range::between(-100, 100), "0", "rad/s", "counter-clockwise rotation (2D only)"),
-      {"centre", FieldType::Vector, "dimension numbers", "the box centre", "m", "reference point (rotation centre) at t = 0"},
+      {"centre", FieldType::Vector, "dimension numbers", "the centre of the bounding box", "m", "reference point (rotation centre) at t = 0"},
       number_doc("ramp", Range::non_negative(), "0", "s", "smooth-start time of the motion")}});
 
 }  // namespace
@@ -65,11 +68,18 @@ BodySpec parse_body(const JsonFields& b, const Scene& s) {
                                 [](const auto& m) { return m.structure_allowed; }) +
                             " material; \"" + body.material + "\" is " +
                             (is_fluid ? std::string("a fluid") : std::string(1, '"').append(solid->model_name()).append(1, '"')));
-  b.choice("shape", {"box"});
-  body.lo = b.vector("min", d);
-  body.hi = b.vector("max", d);
-  for (int a = 0; a < d; ++a)
-    if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
+  if (b.is_object("shape")) {
+    body.shape = parse_shape(b.object("shape"), d);
+    const geometry::Bounds bb = body.shape->bounds();
+    body.lo = bb.lo;
+    body.hi = bb.hi;
+  } else {
+    b.choice("shape", {"box"});
+    body.lo = b.vector("min", d);
+    body.hi = b.vector("max", d);
+    for (int a = 0; a < d; ++a)
+      if (!(body.hi[a] > body.lo[a])) b.fail("max", "must be greater than min on every axis");
+  }
   body.initial = is_fluid         ? b.choice("initial", {"rest", "hydrostatic"}, "rest")
                  : body.structure ? b.choice("initial", {"rest"}, "rest")
                                   : b.choice("initial", {"rest", "geostatic", "isotropic"}, "rest");

@@ -5,7 +5,10 @@
 
 #include <Eigen/Core>
 
+#include <map>
+
 #include "boundary/body_fields.hpp"
+#include "geometry/lattice_fill.hpp"
 #include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "soil/soil_fields.hpp"
@@ -29,13 +32,47 @@ void lattice(int dim, std::array<double, 3> lo, std::array<double, 3> hi, double
         f(lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dx, dim == 3 ? lo[2] + (k + 0.5) * dx : 0.0);
 }
 
+// The body's particle positions: the box lattice, or the lattice points inside its shape.
+std::vector<geometry::Point> body_points(const Scene& s, const BodySpec& b) {
+  if (b.shape) return geometry::fill_lattice(*b.shape, s.dx);
+  std::vector<geometry::Point> pts;
+  lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) { pts.push_back({x, y, z}); });
+  return pts;
+}
+
+// Area (2D) or volume (3D) of the body.
+double body_measure(const Scene& s, const BodySpec& b) {
+  if (b.shape) return geometry::measure(*b.shape, s.dx);
+  double v = 1;
+  for (int a = 0; a < s.dim; ++a) v *= b.hi[a] - b.lo[a];
+  return v;
+}
+
+// Height (y in 2D, z in 3D) of the body's top surface above each particle: the box's top, or for a
+// shaped body the top particle of its lattice column plus dx/2 (the overburden of sloping ground).
+std::vector<double> column_tops(const Scene& s, const BodySpec& b, const std::vector<geometry::Point>& pts) {
+  const int up = s.dim - 1;
+  std::vector<double> top(pts.size(), b.hi[up]);
+  if (!b.shape) return top;
+  std::map<std::pair<long, long>, double> highest;
+  auto column = [&](const geometry::Point& p) {
+    return std::make_pair(std::lround(p[0] / s.dx - 0.5), up == 2 ? std::lround(p[1] / s.dx - 0.5) : 0L);
+  };
+  for (const auto& p : pts) {
+    auto [it, fresh] = highest.try_emplace(column(p), p[up]);
+    if (!fresh) it->second = std::max(it->second, p[up]);
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i) top[i] = highest[column(pts[i])] + 0.5 * s.dx;
+  return top;
+}
+
 // Soil body on the lattice. "geostatic": vertical stress -rho g depth and horizontal K0 times it
 // (tension positive), K0 = nu/(1 - nu) unless given (elastic lateral confinement); "isotropic":
 // sigma = -pressure I (saturated soil: effective stresses, from the buoyant weight). A model with state
 // fields initialises them from this stress (materials/solid_model.hpp: initialise).
 // Structure bodies are built the same way (at rest) as Kind::Structure, or Kind::RigidStructure when
 // their motion is prescribed, and carry their body number + 1 in the field "structure_body".
-void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t body_index) {
+BodyFill add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t body_index) {
   std::uint16_t mat = 0;
   while (s.soils[mat].name != b.material) ++mat;
   const SoilMaterial& m = s.soils[mat];
@@ -47,19 +84,22 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
   // saturated soil: the effective stress carries the buoyant weight (rho_d - (1 - n0) rho_w) g
   const double rho_geo = m.saturated() && s.has_fluid() ? m.density - (1.0 - m.porosity) * s.materials.front().density
                                                         : m.density;
-  lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
+  const auto pts = body_points(s, b);
+  const auto tops = column_tops(s, b, pts);
+  for (std::size_t q = 0; q < pts.size(); ++q) {
+    const double x = pts[q][0], y = pts[q][1], z = pts[q][2];
     const Kind kind = !b.structure ? Kind::Soil : b.motion.active ? Kind::RigidStructure : Kind::Structure;
     P.add(x, y, z, m.density * vol, m.density, kind, mat);
     if (b.structure) P.add_int_field(BodyFields::structure_body, BodyFields::owner).back() = static_cast<std::int32_t>(body_index + 1);
     if (b.fixed) P.add_int_field(BodyFields::fixed, BodyFields::owner).back() = 1;
     else { P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2]; }
-    if (b.surcharge.pressure > 0 && (up == 1 ? y : z) > b.hi[up] - s.dx) {  // top row carries the surcharge
+    if (b.surcharge.pressure > 0 && (up == 1 ? y : z) > tops[q] - s.dx) {  // top row carries the surcharge
       P.add_field(BodyFields::surcharge, BodyFields::owner).back() = b.surcharge.pressure;
       P.add_field(BodyFields::surcharge_ramp, BodyFields::owner).back() = b.surcharge.ramp;
     }
     const std::size_t i = P.size() - 1;
     if (geostatic) {
-      const double depth = b.hi[up] - (up == 1 ? y : z);
+      const double depth = tops[q] - (up == 1 ? y : z);
       const double sv = -rho_geo * g * depth;
       P.add_field(SoilFields::xx, SoilFields::owner)[i] = k0 * sv;
       P.add_field(up == 1 ? SoilFields::yy : SoilFields::zz, SoilFields::owner)[i] = sv;
@@ -77,12 +117,13 @@ void add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::size_t 
           Eigen::Vector3d(stress(SoilFields::xx), stress(SoilFields::yy), stress(SoilFields::zz)).asDiagonal();
       model.initialise(sigma, b, st, i);
     }, m.model);
-  });
+  }
+  return {pts.size(), m.density * vol * static_cast<double>(pts.size()), m.density * body_measure(s, b)};
 }
 
 }  // namespace
 
-Particles build_particles(const Scene& s) {
+Particles build_particles(const Scene& s, std::vector<BodyFill>* fills) {
   Particles P;
   P.dim = s.dim;
   const double vol = std::pow(s.dx, s.dim);
@@ -91,7 +132,8 @@ Particles build_particles(const Scene& s) {
   for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
     const BodySpec& b = s.bodies[bi];
     if (std::any_of(s.soils.begin(), s.soils.end(), [&](const SoilMaterial& m) { return m.name == b.material; })) {
-      add_soil_body(P, s, b, bi);
+      const BodyFill f = add_soil_body(P, s, b, bi);
+      if (fills) fills->push_back(f);
       continue;
     }
     std::uint16_t mat = 0;
@@ -104,16 +146,21 @@ Particles build_particles(const Scene& s) {
       for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
       top = std::min(top, proj);
     }
-    lattice(s.dim, b.lo, b.hi, s.dx, [&](double x, double y, double z) {
+    const auto pts = body_points(s, b);
+    double mass = 0;
+    for (const auto& pt : pts) {
+      const double x = pt[0], y = pt[1], z = pt[2];
       double rho = eos.rho0;
       if (b.initial == "hydrostatic" && gmag > 0) {
         const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
         rho = eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
       }
       P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
+      mass += rho * vol;
       P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
       P.p.back() = eos.pressure(rho);
-    });
+    }
+    if (fills) fills->push_back({pts.size(), mass, eos.rho0 * body_measure(s, b)});
   }
 
   const int L = wall_layers(s);
@@ -169,6 +216,41 @@ Particles build_particles(const Scene& s) {
       P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
     });
+  }
+  // Walls of any shape: the lattice points of the solid within the wall layers of its surface, each with
+  // the surface's outward normal (the gradient of the distance). A repulsive wall is one line of
+  // particles on the surface: the points of the first layer moved onto it, none closer than dx/2.
+  for (const auto& b : s.walls.boundaries) {
+    const std::size_t first = P.size();
+    std::vector<geometry::Point> pts = geometry::fill_lattice(*b.shape, s.dx, (wall == Kind::RepulsiveWall ? 1 : L) * s.dx);
+    if (wall == Kind::RepulsiveWall) {
+      std::vector<geometry::Point> on_surface;
+      for (const auto& p : pts) {
+        const geometry::Point n = geometry::outward_normal(*b.shape, p, 1e-3 * s.dx);
+        const double d = b.shape->distance(p);
+        geometry::Point q{p[0] - d * n[0], p[1] - d * n[1], p[2] - d * n[2]};
+        bool crowded = false;
+        for (auto it = on_surface.rbegin(); it != on_surface.rend() && !crowded; ++it) {
+          double r2 = 0;
+          for (int a = 0; a < 3; ++a) r2 += (q[a] - (*it)[a]) * (q[a] - (*it)[a]);
+          crowded = r2 < 0.25 * s.dx * s.dx;
+        }
+        if (!crowded) on_surface.push_back(q);
+      }
+      pts = std::move(on_surface);
+    }
+    for (const auto& p : pts) {
+      P.add(p[0], p[1], p[2], rho0 * vol, rho0, wall, 0);
+      if (s.mixed_wall_slip())
+        P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = b.slip == "free_slip" ? 1 : 0;
+    }
+    for (const char* f : {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz}) P.add_field(f, BodyFields::owner);
+    double* n[3] = {P.field(BodyFields::wall_nx).data(), P.field(BodyFields::wall_ny).data(),
+                    P.field(BodyFields::wall_nz).data()};
+    for (std::size_t i = first; i < P.size(); ++i) {
+      const geometry::Point nrm = geometry::outward_normal(*b.shape, {P.x[i], P.y[i], P.z[i]}, 1e-3 * s.dx);
+      for (int a = 0; a < 3; ++a) n[a][i] = nrm[a];
+    }
   }
   return P;
 }

@@ -2,12 +2,22 @@
 // (particle centres at min + (i + 1/2) dx) and wall containers as `layers` lattice layers outside
 // the container's inner faces, so that fluid and wall lattices line up.
 #pragma once
+#include <vector>
+
 #include "core/particles.hpp"
 #include "io/scene.hpp"
 
 namespace geosph {
 
-Particles build_particles(const Scene& scene);
+// What a body was filled with: its particle count and mass, and its material density times its area
+// (2D) or volume (3D), which the lattice fill approaches as dx shrinks.
+struct BodyFill {
+  std::size_t particles = 0;
+  double mass = 0, shape_mass = 0;
+};
+
+// With fills, one entry per body (scene order).
+Particles build_particles(const Scene& scene, std::vector<BodyFill>* fills = nullptr);
 int wall_layers(const Scene& scene);
 
 }  // namespace geosph

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Core>
+
 #include "soil/soil_forces.hpp"
 
 namespace geosph {
@@ -33,6 +35,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         const double volume = std::pow(scene_.dx, scene_.dim);
         const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         const std::int32_t* block = P.find_int(BodyFields::wall_block);
+        const double* wn[3] = {P.find(BodyFields::wall_nx), P.find(BodyFields::wall_ny), P.find(BodyFields::wall_nz)};
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
         const double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
         const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
@@ -68,8 +71,24 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             continue;
           }
           const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
-          for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
-          for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
+          const bool shaped = wn[0] && (wn[0][w] != 0 || wn[1][w] != 0 || wn[2][w] != 0);
+          if (shaped && !no_slip) {
+            // a wall of any shape (walls.boundaries): the extrapolated stress mirrored across the wall's
+            // tangent plane, H sigma H with H = I - 2 n n^T, which reverses the normal-tangential shear
+            // and keeps the rest, so the mean of soil and ghost stress has no shear traction on the wall
+            const Eigen::Vector3d nn(wn[0][w], wn[1][w], wn[2][w]);
+            const Eigen::Matrix3d H = Eigen::Matrix3d::Identity() - 2.0 * nn * nn.transpose();
+            Eigen::Matrix3d t;
+            t << ss[0], ss[3], ncomp == 6 ? ss[4] : 0.0, ss[3], ss[1], ncomp == 6 ? ss[5] : 0.0,
+                ncomp == 6 ? ss[4] : 0.0, ncomp == 6 ? ss[5] : 0.0, ss[2];
+            const Eigen::Matrix3d m = H * (t / sw) * H;
+            s[0][w] = m(0, 0) - hydro; s[1][w] = m(1, 1) - hydro; s[2][w] = m(2, 2) - hydro;
+            s[3][w] = m(0, 1);
+            if (ncomp == 6) { s[4][w] = m(0, 2); s[5][w] = m(1, 2); }
+          } else {
+            for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
+            for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
+          }
           const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
           const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
           if (block && block[w] > 0 && no_slip) {  // clamp: the embedded material does not move
@@ -81,9 +100,12 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             // u = v_s + 2 ((v_w - v_s).n) n, n the wall normal into the soil (minus the kernel-weighted
             // mean offset to the soil neighbours); the stress divergence then resists the soil moving into
             // the wall without shearing it
+            // (a shaped wall's own surface normal where it has one)
             const double len = std::sqrt(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]);
             double nrm[3] = {0, 0, 0}, vn = 0;
-            if (len > 0)
+            if (shaped)
+              for (int a = 0; a < 3; ++a) { nrm[a] = wn[a][w]; vn += (vw[a] - vs[a]) * nrm[a]; }
+            else if (len > 0)
               for (int a = 0; a < 3; ++a) { nrm[a] = -sd[a] / len; vn += (vw[a] - vs[a]) * nrm[a]; }
             for (int a = 0; a < 3; ++a) wv[a][w] = vs[a] + 2.0 * vn * nrm[a];
           }

@@ -1,5 +1,6 @@
 #include "boundary/wall_input.hpp"
 
+#include "geometry/shape_input.hpp"
 #include "io/scene_reference.hpp"
 
 namespace geosph {
@@ -27,8 +28,19 @@ const bool documented = register_section(
       {"layers", FieldType::Integer, "in [1, 10]", "enough to cover the kernel support", "-", "wall particle layers",
        Range::between(1, 10)},
       number_doc("repulsive_strength", Range::non_negative(), "0.05 c0^2", "m^2/s^2", "repulsive walls: D"),
-      {"containers", FieldType::Objects, "see walls.containers", "required without blocks", "-", "boxes walled on their faces"},
-      {"blocks", FieldType::Objects, "see walls.blocks", "none", "-", "solid boxes of wall particles"}}});
+      {"containers", FieldType::Objects, "see walls.containers", "required without blocks or boundaries", "-",
+       "boxes walled on their faces"},
+      {"blocks", FieldType::Objects, "see walls.blocks", "none", "-", "solid boxes of wall particles"},
+      {"boundaries", FieldType::Objects, "see walls.boundaries", "none", "-",
+       "walls of any shape (inclined, curved): the surface of a solid shape"}}});
+
+const bool documented_boundaries = register_section(
+    {"walls.boundaries", "walls.boundaries[k]",
+     "A wall of any shape: the surface of the solid `shape`. Its particles fill the lattice points inside the shape "
+     "within the wall layers of its surface (the lattice (i + 1/2) dx) and carry the surface's outward "
+     "normal, which free slip uses.",
+     {{"shape", FieldType::Object, "see shape", "required", "-", "the solid whose surface is the wall"},
+      choice_doc("slip", {"no_slip", "free_slip"}, "walls.slip", "this wall's condition")}});
 
 const bool documented_containers = register_section(
     {"walls.containers", "walls.containers[k]", "A box whose faces (but the open ones) are walls; min/max are the inner faces.",
@@ -53,7 +65,8 @@ WallSpec parse_walls(const JsonFields& w, int dim) {
   walls.slip = w.choice("slip", {"no_slip", "free_slip"}, "no_slip");
   walls.layers = static_cast<int>(w.integer("layers", 1, 10, 0));
   walls.repulsive_strength = w.number("repulsive_strength", Range::non_negative(), 0.0);
-  if (!w.has("containers") && !w.has("blocks")) w.fail("containers", "is missing: walls need 'containers' or 'blocks'");
+  if (!w.has("containers") && !w.has("blocks") && !w.has("boundaries"))
+    w.fail("containers", "is missing: walls need 'containers', 'blocks' or 'boundaries'");
   if (w.has("containers"))
     for (auto& c : w.array_of_objects("containers")) {
       c.section("walls.containers");
@@ -71,6 +84,18 @@ WallSpec parse_walls(const JsonFields& w, int dim) {
       cs.ramp = c.number("ramp", Range::non_negative(), 0.0);
       c.reject_unknown();
       walls.blocks.push_back(cs);
+    }
+  if (w.has("boundaries"))
+    for (auto& c : w.array_of_objects("boundaries")) {
+      c.section("walls.boundaries");
+      BoundarySpec bs;
+      bs.shape = parse_shape(c.object("shape"), dim);
+      const geometry::Bounds bb = bs.shape->bounds();
+      bs.lo = bb.lo;
+      bs.hi = bb.hi;
+      bs.slip = c.choice("slip", {"no_slip", "free_slip"}, walls.slip);
+      c.reject_unknown();
+      walls.boundaries.push_back(bs);
     }
   w.reject_unknown();
   return walls;

@@ -124,6 +124,46 @@ std::array<double, 3> JsonFields::vector(const std::string& key, int n, std::arr
   return vector(key, n);
 }
 
+namespace {
+
+// v as a list of points of n finite numbers, or an empty optional if it is not one.
+bool read_points(const nlohmann::json& v, int n, std::vector<std::array<double, 3>>& out) {
+  if (!v.is_array()) return false;
+  for (const auto& p : v) {
+    if (!p.is_array() || static_cast<int>(p.size()) != n) return false;
+    std::array<double, 3> q{0, 0, 0};
+    for (int a = 0; a < n; ++a) {
+      if (!p[a].is_number() || !std::isfinite(p[a].get<double>())) return false;
+      q[a] = p[a].get<double>();
+    }
+    out.push_back(q);
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::array<double, 3>> JsonFields::points(const std::string& key, int n) const {
+  const auto& v = get(key);
+  std::vector<std::array<double, 3>> out;
+  if (!read_points(v, n, out))
+    fail(key, "must be an array of points, each an array of " + std::to_string(n) + " finite numbers, got " + shown(v));
+  return out;
+}
+
+std::vector<std::vector<std::array<double, 3>>> JsonFields::point_lists(const std::string& key, int n) const {
+  if (!obj_.contains(key)) { used_.insert(key); return {}; }
+  const auto& v = get(key);
+  const std::string want = "must be an array of point arrays (each point " + std::to_string(n) + " finite numbers)";
+  if (!v.is_array()) fail(key, want + ", got " + shown(v));
+  std::vector<std::vector<std::array<double, 3>>> out;
+  for (const auto& e : v) {
+    out.emplace_back();
+    if (!read_points(e, n, out.back())) fail(key, want + ", got " + shown(v));
+  }
+  return out;
+}
+
 std::vector<std::string> JsonFields::texts(const std::string& key, const std::vector<std::string>& allowed) const {
   if (!obj_.contains(key)) { used_.insert(key); return {}; }
   const auto& v = get(key);

@@ -47,10 +47,15 @@ class JsonFields {
   std::array<double, 3> vector(const std::string& key, int n) const;
   std::array<double, 3> vector(const std::string& key, int n, std::array<double, 3> fallback) const;
   std::vector<std::string> texts(const std::string& key, const std::vector<std::string>& allowed) const;
+  // An array of points, each an array of n finite numbers (e.g. a polygon's vertices).
+  std::vector<std::array<double, 3>> points(const std::string& key, int n) const;
+  // An array of such point arrays (e.g. a polygon's holes); empty if the key is absent.
+  std::vector<std::vector<std::array<double, 3>>> point_lists(const std::string& key, int n) const;
   JsonFields object(const std::string& key) const;
   std::optional<JsonFields> optional_object(const std::string& key) const;
   std::vector<JsonFields> array_of_objects(const std::string& key) const;
   bool has(const std::string& key) const { return obj_.contains(key); }
+  bool is_object(const std::string& key) const { return obj_.contains(key) && obj_.at(key).is_object(); }
   std::vector<std::string> keys() const;
 
   // Names the section this object is (io/scene_reference.hpp): its documented fields are listed when

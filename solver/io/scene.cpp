@@ -6,6 +6,7 @@
 #include "boundary/body_input.hpp"
 #include "boundary/geometry.hpp"
 #include "boundary/wall_input.hpp"
+#include "geometry/lattice_fill.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_file.hpp"
 #include "core/provenance.hpp"
@@ -176,6 +177,27 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   return s;
 }
 
+// Intersection volume of two boxes (dim axes).
+static double overlap_volume(int dim, const std::array<double, 3>& alo, const std::array<double, 3>& ahi,
+                             const std::array<double, 3>& blo, const std::array<double, 3>& bhi) {
+  double v = 1;
+  for (int a = 0; a < dim; ++a) v *= std::max(0.0, std::min(ahi[a], bhi[a]) - std::max(alo[a], blo[a]));
+  return v;
+}
+
+// The body's shape (its box when it has none).
+static geometry::ShapePtr shape_of(const Scene& s, const BodySpec& b) {
+  return b.shape ? b.shape : geometry::make_box(s.dim, b.lo, b.hi);
+}
+
+// Two bodies overlap: their boxes share volume, or for shaped bodies a lattice point of one lies inside
+// the other.
+static bool bodies_overlap(const Scene& s, const BodySpec& a, const BodySpec& b) {
+  if (!a.shape && !b.shape) return overlap_volume(s.dim, a.lo, a.hi, b.lo, b.hi) > 1e-9 * std::pow(s.dx, s.dim);
+  return geometry::shapes_overlap(*shape_of(s, a), *shape_of(s, b), s.dx) ||
+         geometry::shapes_overlap(*shape_of(s, b), *shape_of(s, a), s.dx);
+}
+
 // Structure bodies: none may overlap a soil body at start (the contact would begin with the soil
 // inside the structure), every structure in a scene with soil names its interface friction, and a
 // prescribed motion must keep the structure inside the domain until time.end.
@@ -198,12 +220,9 @@ static void validate_structures(const Scene& s) {
     for (std::size_t o = 0; o < s.bodies.size(); ++o) {
       const BodySpec& so = s.bodies[o];
       if (so.structure || !is_solid_material(s, so.material)) continue;
-      double overlap = 1;
-      for (int a = 0; a < s.dim; ++a)
-        overlap *= std::max(0.0, std::min(st.hi[a], so.hi[a]) - std::max(st.lo[a], so.lo[a]));
-      if (overlap > 1e-9 * std::pow(s.dx, s.dim))
+      if (bodies_overlap(s, st, so))
         fail(field, "the structure overlaps the soil body bodies[" + std::to_string(o) +
-                        "] at start; structure and soil boxes may touch but not intersect");
+                        "] at start; structure and soil may touch but not intersect");
     }
     if (!st.motion.active) continue;
     // corners at time.end: rotated about the centre by omega * t and translated by v * t (the ramp only
@@ -256,20 +275,16 @@ static void validate_two_phase(const Scene& s) {
       if (w.material != s.materials.front().name) continue;
       bool in = true;
       for (int a = 0; a < s.dim; ++a) in = in && w.lo[a] <= b.lo[a] + 1e-12 && w.hi[a] >= b.hi[a] - 1e-12;
+      if (in && (b.shape || w.shape)) {  // every soil particle lies in the water's shape
+        const auto water = shape_of(s, w);
+        for (const auto& p : geometry::fill_lattice(*shape_of(s, b), s.dx)) in = in && water->contains(p, s.dx);
+      }
       inside = inside || in;
     }
     if (!inside)
       fail(field, "the saturated soil body must lie inside a body of the fluid \"" + s.materials.front().name +
                       "\" (its pore water)");
   }
-}
-
-// Intersection volume of two boxes (dim axes).
-static double overlap_volume(int dim, const std::array<double, 3>& alo, const std::array<double, 3>& ahi,
-                             const std::array<double, 3>& blo, const std::array<double, 3>& bhi) {
-  double v = 1;
-  for (int a = 0; a < dim; ++a) v *= std::max(0.0, std::min(ahi[a], bhi[a]) - std::max(alo[a], blo[a]));
-  return v;
 }
 
 // No two bodies may overlap (their particles would sit on top of each other) except a saturated soil
@@ -287,7 +302,7 @@ static void validate_overlaps(const Scene& s) {
     for (std::size_t k = i + 1; k < s.bodies.size(); ++k) {
       const BodySpec &a = s.bodies[i], &b = s.bodies[k];
       if (is_fluid(a) != is_fluid(b) && s.two_phase()) continue;  // pore water and its soil skeleton
-      if (overlap_volume(s.dim, a.lo, a.hi, b.lo, b.hi) > tiny)
+      if (bodies_overlap(s, a, b))
         fail("bodies[" + std::to_string(k) + "]", "overlaps bodies[" + std::to_string(i) +
                                                       "]: their particles would sit on top of each other; bodies "
                                                       "may touch but not intersect");
@@ -300,9 +315,16 @@ static void validate_overlaps(const Scene& s) {
     const BodySpec& b = s.bodies[k];
     if (b.is_rigid_structure()) continue;
     const std::string field = "bodies[" + std::to_string(k) + "]";
-    for (std::size_t c = 0; c < s.walls.blocks.size(); ++c)
-      if (overlap_volume(s.dim, b.lo, b.hi, s.walls.blocks[c].lo, s.walls.blocks[c].hi) > tiny)
-        fail(field, "overlaps the wall block walls.blocks[" + std::to_string(c) + "]");
+    for (std::size_t c = 0; c < s.walls.blocks.size(); ++c) {
+      BodySpec block;
+      block.lo = s.walls.blocks[c].lo;
+      block.hi = s.walls.blocks[c].hi;
+      if (bodies_overlap(s, b, block)) fail(field, "overlaps the wall block walls.blocks[" + std::to_string(c) + "]");
+    }
+    for (std::size_t c = 0; c < s.walls.boundaries.size(); ++c)
+      if (geometry::shapes_overlap(*shape_of(s, b), *s.walls.boundaries[c].shape, s.dx))
+        fail(field, "reaches into the solid of the wall walls.boundaries[" + std::to_string(c) +
+                        "] (bodies may touch a wall's surface but not cross it)");
     for (std::size_t c = 0; c < s.walls.containers.size(); ++c) {
       const ContainerSpec& w = s.walls.containers[c];
       for (int a = 0; a < s.dim; ++a) {
@@ -358,6 +380,40 @@ void validate_scene(const Scene& s) {
     for (int a = 0; a < s.dim; ++a)
       if (s.walls.blocks[c].lo[a] < s.domain.lo[a] || s.walls.blocks[c].hi[a] > s.domain.hi[a])
         fail("walls.blocks[" + std::to_string(c) + "]", std::string("extends outside the domain along ") + axes[a]);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    if (s.bodies[b].shape && geometry::fill_lattice(*s.bodies[b].shape, s.dx).empty())
+      fail("bodies[" + std::to_string(b) + "].shape", s.bodies[b].shape->describe() + " holds no lattice point at dx = " +
+                                                         std::to_string(s.dx) + " m (it is smaller than a particle)");
+  // shaped bodies and walls fill the lattice (i + 1/2) dx; a box beside them lines up with it only if its
+  // lower corner is a whole multiple of dx (its own lattice starts there)
+  bool shaped = !s.walls.boundaries.empty();
+  for (const auto& b : s.bodies) shaped = shaped || b.shape != nullptr;
+  auto on_lattice = [&](const std::array<double, 3>& lo, const std::string& field) {
+    for (int a = 0; a < s.dim; ++a) {
+      const double q = lo[a] / s.dx;
+      if (std::abs(q - std::round(q)) > 1e-6)
+        fail(field, std::string("this box's min along ") + axes[a] + " (" + std::to_string(lo[a]) +
+                        " m) is not a whole multiple of dx: with shaped bodies or walls in the scene, every box must "
+                        "start on their lattice (i + 1/2) dx, or its particles would not line up with theirs");
+    }
+  };
+  if (shaped) {
+    for (std::size_t b = 0; b < s.bodies.size(); ++b)
+      if (!s.bodies[b].shape) on_lattice(s.bodies[b].lo, "bodies[" + std::to_string(b) + "].min");
+    for (std::size_t c = 0; c < s.walls.containers.size(); ++c)
+      on_lattice(s.walls.containers[c].lo, "walls.containers[" + std::to_string(c) + "].min");
+    for (std::size_t c = 0; c < s.walls.blocks.size(); ++c)
+      on_lattice(s.walls.blocks[c].lo, "walls.blocks[" + std::to_string(c) + "].min");
+  }
+  for (std::size_t c = 0; c < s.walls.boundaries.size(); ++c)
+    if (geometry::fill_lattice(*s.walls.boundaries[c].shape, s.dx).empty())
+      fail("walls.boundaries[" + std::to_string(c) + "].shape",
+           s.walls.boundaries[c].shape->describe() + " holds no lattice point at dx = " + std::to_string(s.dx) +
+               " m (it is thinner than a particle)");
+  for (std::size_t c = 0; c < s.walls.boundaries.size(); ++c)
+    for (int a = 0; a < s.dim; ++a)
+      if (s.walls.boundaries[c].lo[a] < s.domain.lo[a] || s.walls.boundaries[c].hi[a] > s.domain.hi[a])
+        fail("walls.boundaries[" + std::to_string(c) + "].shape", std::string("extends outside the domain along ") + axes[a]);
   if (s.gravity_ramp > s.t_end) fail("time.gravity_ramp", "must not exceed time.end");
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
     if (s.bodies[b].surcharge.ramp > s.t_end) fail("bodies[" + std::to_string(b) + "].surcharge.ramp", "must not exceed time.end");

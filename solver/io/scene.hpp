@@ -10,6 +10,7 @@
 
 #include "core/cell_list.hpp"
 #include "core/kernels.hpp"
+#include "geometry/shape.hpp"
 #include "materials/solid_material.hpp"
 #include "materials/tait_fluid.hpp"
 
@@ -17,7 +18,10 @@ namespace geosph {
 
 struct BodySpec {
   std::string material;
-  std::array<double, 3> lo{}, hi{};
+  std::array<double, 3> lo{}, hi{};   // the box, or the bounding box of `shape`
+  // The body's shape when it is not the box lo..hi (geometry/shape.hpp); its particles fill the points
+  // (i + 1/2) dx inside it (geometry/lattice_fill.hpp).
+  geometry::ShapePtr shape;
   std::string initial = "rest";       // rest (uniform rho0) | hydrostatic (fluid: Tait hydrostatic state)
                                       // | geostatic (soil: sigma_v = rho g depth, sigma_h = K0 sigma_v)
                                       // | isotropic (soil: sigma = -pressure I)
@@ -58,6 +62,14 @@ struct ContainerSpec {
   double ramp = 0;                    // blocks only: the velocity is reached over `ramp` seconds (smooth start)
 };
 
+// A wall of any shape: the solid `shape`, whose surface is the wall; its particles fill the lattice
+// points inside it within the wall layers of the surface, and carry the surface's outward normal.
+struct BoundarySpec {
+  geometry::ShapePtr shape;
+  std::array<double, 3> lo{}, hi{};   // the shape's bounding box
+  std::string slip;                   // no_slip | free_slip (default: walls.slip)
+};
+
 struct WallSpec {
   std::string type = "dummy";         // dummy (Adami et al. 2012) | repulsive (Monaghan 1994)
   std::string slip = "no_slip";       // no_slip | free_slip
@@ -65,6 +77,7 @@ struct WallSpec {
   double repulsive_strength = 0;      // D [m^2/s^2]; 0: 0.05 c0^2 (i.e. ~5 g H for c0 = 10 sqrt(gH))
   std::vector<ContainerSpec> containers;
   std::vector<ContainerSpec> blocks;  // solid boxes of wall particles (e.g. a clamp); `open` unused
+  std::vector<BoundarySpec> boundaries;
 };
 
 // Resource limits of a run (not scene fields: the command line sets them, sim/resource_limits.hpp).
@@ -104,18 +117,23 @@ struct Scene {
   bool has_soil() const { return !soils.empty(); }
   std::vector<BodySpec> bodies;
   WallSpec walls;
-  bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty(); }
-  // Some container's slip differs from walls.slip: the wall particles carry BodyFields::wall_free_slip.
+  bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty() || !walls.boundaries.empty(); }
+  // Some container's or boundary's slip differs from walls.slip: the wall particles carry
+  // BodyFields::wall_free_slip.
   bool mixed_wall_slip() const {
     for (const auto& c : walls.containers)
       if (c.slip != walls.slip) return true;
+    for (const auto& b : walls.boundaries)
+      if (b.slip != walls.slip) return true;
     return false;
   }
-  // Any wall is no-slip (walls.slip, blocks, or a container's own).
+  // Any wall is no-slip (walls.slip, blocks, or a container's or boundary's own).
   bool any_no_slip_wall() const {
     if (walls.slip == "no_slip") return true;
     for (const auto& c : walls.containers)
       if (c.slip == "no_slip") return true;
+    for (const auto& b : walls.boundaries)
+      if (b.slip == "no_slip") return true;
     return false;
   }
   // The soil (or structure) material called `name`, null if there is none.

@@ -20,7 +20,7 @@ std::set<std::pair<std::string, std::string>>*& recorder() {
 // reading order of the scene: the top level, then each section as the reader meets it
 int rank(const std::string& tag) {
   static const std::vector<std::string> order = {"scene", "kernel", "domain", "time", "output", "numerics",
-                                                 "materials", "bodies", "walls"};
+                                                 "materials", "bodies", "walls", "shape"};
   const std::string head = tag.substr(0, tag.find_first_of(":."));
   const auto it = std::find(order.begin(), order.end(), head);
   return static_cast<int>(it - order.begin());
@@ -37,6 +37,8 @@ const char* type_name(FieldType t) {
     case FieldType::Texts: return "array of strings";
     case FieldType::Object: return "object";
     case FieldType::Objects: return "array of objects";
+    case FieldType::Points: return "array of points";
+    case FieldType::PointLists: return "array of point arrays";
   }
   return "?";
 }
@@ -129,6 +131,14 @@ nlohmann::json field_schema(const FieldDoc& f) {
     case FieldType::Texts: p["type"] = "array"; p["items"] = {{"type", "string"}}; break;
     case FieldType::Object: p["type"] = "object"; break;
     case FieldType::Objects: p["type"] = "array"; p["items"] = {{"type", "object"}}; break;
+    case FieldType::Points:
+      p["type"] = "array";
+      p["items"] = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 3}};
+      break;
+    case FieldType::PointLists:
+      p["type"] = "array";
+      p["items"] = {{"type", "array"}, {"items", {{"type", "array"}, {"items", {{"type", "number"}}}}}};
+      break;
   }
   return p;
 }

@@ -19,7 +19,7 @@
 
 namespace geosph {
 
-enum class FieldType { Number, Integer, Boolean, Text, Choice, Vector, Texts, Object, Objects };
+enum class FieldType { Number, Integer, Boolean, Text, Choice, Vector, Texts, Object, Objects, Points, PointLists };
 
 struct FieldDoc {
   std::string key;

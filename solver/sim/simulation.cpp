@@ -26,7 +26,7 @@ double pair_list_skin(const Scene& s) {
 Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   validate_scene(scene_);
   check_resources(scene_);  // before anything is allocated
-  P_ = build_particles(scene_);
+  P_ = build_particles(scene_, &fills_);
   n_fluid_ = P_.count(Kind::Fluid);
   n_soil_ = P_.count(Kind::Soil);
   n_structure_ = P_.count(Kind::Structure) + P_.count(Kind::RigidStructure);

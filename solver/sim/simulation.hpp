@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "boundary/dummy_wall.hpp"
+#include "boundary/geometry.hpp"
 #include "coupling/seepage.hpp"
 #include "coupling/soil_structure_contact.hpp"
 #include "boundary/soil_wall.hpp"
@@ -51,6 +52,8 @@ class Simulation {
   std::size_t structure_count() const { return n_structure_; }  // deformable and rigid structure particles
   // particles the step integrates or moves: fluid, soil and structures; walls excluded
   std::size_t moving_count() const { return n_fluid_ + n_soil_ + n_structure_; }
+  // What each body was filled with (scene order): particles, mass and density x area (volume).
+  const std::vector<BodyFill>& fills() const { return fills_; }
   // seepage coupling of a two-phase scene (null otherwise)
   const Seepage* seepage() const { return seepage_.get(); }
   // prescribed motion of the rigid structures (null if the scene has none)
@@ -97,6 +100,7 @@ class Simulation {
   TimeStepLimits limits_;
   StateSummary state_;
   std::size_t n_fluid_ = 0, n_soil_ = 0, n_structure_ = 0;
+  std::vector<BodyFill> fills_;
   double t_ = 0, dt_ = 0;
   double density_dt_ = 0;  // the step the density stage last predicted the fluid density with (0 before the first)
   long step_ = 0;
