@@ -219,7 +219,9 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills) {
   }
   // Walls of any shape: the lattice points of the solid within the wall layers of its surface, each with
   // the surface's outward normal (the gradient of the distance). A repulsive wall is one line of
-  // particles on the surface: the points of the first layer moved onto it, none closer than dx/2.
+  // particles dx/2 inside the solid: the points of the first layer moved there along the normal, none
+  // closer than dx/2 to another. (A box container's line lies on its faces, its fluid dx/2 from them;
+  // a shaped body's lattice reaches the surface itself, so the line keeps that dx/2 gap behind it.)
   for (const auto& b : s.walls.boundaries) {
     const std::size_t first = P.size();
     std::vector<geometry::Point> pts = geometry::fill_lattice(*b.shape, s.dx, (wall == Kind::RepulsiveWall ? 1 : L) * s.dx);
@@ -228,7 +230,8 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills) {
       for (const auto& p : pts) {
         const geometry::Point n = geometry::outward_normal(*b.shape, p, 1e-3 * s.dx);
         const double d = b.shape->distance(p);
-        geometry::Point q{p[0] - d * n[0], p[1] - d * n[1], p[2] - d * n[2]};
+        const double move = -0.5 * s.dx - d;  // along the outward normal, to the distance -dx/2
+        geometry::Point q{p[0] + move * n[0], p[1] + move * n[1], p[2] + move * n[2]};
         bool crowded = false;
         for (auto it = on_surface.rbegin(); it != on_surface.rend() && !crowded; ++it) {
           double r2 = 0;

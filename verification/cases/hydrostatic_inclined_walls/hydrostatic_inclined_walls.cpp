@@ -1,5 +1,6 @@
-// Hydrostatic water in tanks with inclined walls: a trapezoid and a V section whose walls are the
-// surface of a solid shape (walls.boundaries: a box less the tank's section). The water starts in its
+// Hydrostatic water in tanks with inclined or curved walls: a trapezoid and a V section (2D) and a
+// cylinder (3D, case hydrostatic_cylinder_tank), whose walls are the surface of a solid shape
+// (walls.boundaries: a box less the tank's section, a cylinder less the tank's bore). The water starts in its
 // hydrostatic state and must hold it: particle pressures averaged over the last quarter of the run
 // against the Tait profile with the free surface at the filled height
 // (reference/analytical/hydrostatic_tait.hpp), and no particle may end more than dx/2 inside the wall's
@@ -33,22 +34,25 @@ reference::HydrostaticTait column_with_surface(const FluidMaterial& w, double g,
 
 Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::string& variant, double spacing) {
   CaseConfig cfg = base;
-  const auto& v = cfg.spec.at("variants").at(variant);
-  cfg.scene_json["bodies"][0]["shape"]["vertices"] = v.at("water");
-  cfg.scene_json["walls"]["boundaries"][0]["shape"]["parts"][1]["vertices"] = v.at("tank");
+  if (!variant.empty()) {  // a 2D section: the water's and the tank's outlines
+    const auto& v = cfg.spec.at("variants").at(variant);
+    cfg.scene_json["bodies"][0]["shape"]["vertices"] = v.at("water");
+    cfg.scene_json["walls"]["boundaries"][0]["shape"]["parts"][1]["vertices"] = v.at("tank");
+  }
   const Scene scene = cfg.scene(spacing);
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
   rec.variant = variant;
 
   const auto& water = scene.materials.front();
-  const double g = -scene.gravity[1], H = scene.bodies.front().hi[1];
+  const int up = scene.dim - 1;  // gravity along -y (2D) or -z (3D)
+  const double g = -scene.gravity[up], H = scene.bodies.front().hi[up];
   const auto ref = column_with_surface(water, g, H);
   const auto& wall = *scene.walls.boundaries.front().shape;
 
   const double t_avg = 0.75 * scene.t_end;
   const std::size_t n = sim.particles().size();
-  std::vector<double> psum(n, 0), xsum(n, 0), ysum(n, 0);
+  std::vector<double> psum(n, 0), xsum(n, 0), ysum(n, 0), zsum(n, 0);
   long samples = 0;
   const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
     if (s.time() < t_avg) return;
@@ -59,6 +63,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
       psum[P.id[i]] += P.p[i];
       xsum[P.id[i]] += P.x[i];
       ysum[P.id[i]] += P.y[i];
+      zsum[P.id[i]] += P.z[i];
     }
   }, ctx.progress);
 
@@ -68,11 +73,12 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
     const double floor_y = 0.5 * scene.dx;  // the floor row is the box-wall case's business
     for (std::size_t k = 0; k < n; ++k) {
       if (psum[k] == 0 && ysum[k] == 0) continue;
-      const double p = psum[k] / samples, x = xsum[k] / samples, y = ysum[k] / samples;
-      profile.add(p, y);
-      if (-wall.distance({x, y, 0}) < 2 * scene.dx && y > floor_y) {
+      const geometry::Point q{xsum[k] / samples, ysum[k] / samples, zsum[k] / samples};
+      const double p = psum[k] / samples, height = q[up];
+      profile.add(p, height);
+      if (-wall.distance(q) < 2 * scene.dx && height > floor_y) {
         near_sim.push_back(p);
-        near_ref.push_back(ref.pressure(y));
+        near_ref.push_back(ref.pressure(height));
       }
     }
     add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(profile.simulated(), profile.reference()));
@@ -81,7 +87,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
     long leaked = 0;
     const auto& P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.kind[i] == Kind::Fluid && wall.distance({P.x[i], P.y[i], 0}) < -0.5 * scene.dx) ++leaked;
+      if (P.kind[i] == Kind::Fluid && wall.distance({P.x[i], P.y[i], P.z[i]}) < -0.5 * scene.dx) ++leaked;
     add_case_metric(rec, cfg, "leaked_particles", static_cast<double>(leaked));
     rec.series = profile.series();
     rec.extra["surface_height_m"] = H;
@@ -96,7 +102,10 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 }  // namespace
 
 std::vector<Record> run_hydrostatic_inclined_walls(const CaseContext& ctx, const std::string& case_name) {
-  return run_each_variant(ctx, case_name, run_variant);
+  if (load_case(ctx, case_name).spec.contains("variants")) return run_each_variant(ctx, case_name, run_variant);
+  return run_each_spacing(ctx, case_name, [](const CaseConfig& cfg, const CaseContext& c, double dx) {
+    return run_variant(cfg, c, "", dx);
+  });
 }
 
 GEOSPH_CASE_DRIVER(hydrostatic_inclined_walls, run_hydrostatic_inclined_walls);
