@@ -98,6 +98,10 @@ int cmd_run(const RunOptions& o) {
                          "not there; --out must be the directory of the run that wrote " + restarted_from.string());
     next_out = stored_output.at("next_out").get<double>();
   } else {
+    const GravityLoadingResult& gl = sim.settle_under_gravity();  // before anything is written
+    if (gl.ran)
+      std::fprintf(stderr, "gravity loading: settled in %.4g s (%ld steps), kinetic energy %.3g of its peak\n", gl.time,
+                   gl.steps, gl.peak_kinetic_energy > 0 ? gl.final_kinetic_energy / gl.peak_kinetic_energy : 0.0);
     prepare_output_dir(o.out, o.overwrite);
   }
   Hdf5Output out(o.out, prov);

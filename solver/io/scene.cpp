@@ -6,6 +6,7 @@
 #include "boundary/body_input.hpp"
 #include "boundary/geometry.hpp"
 #include "boundary/wall_input.hpp"
+#include "sim/gravity_loading.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_file.hpp"
@@ -40,7 +41,9 @@ const bool documented_top = register_section(
       {"numerics", FieldType::Object, "see numerics", "defaults", "-", "sorting, blow-up bound, corrections"},
       {"materials", FieldType::Object, "name -> material", "required", "-", "the materials by name (see materials)"},
       {"bodies", FieldType::Objects, "see bodies", "required", "-", "the bodies filled with particles"},
-      {"walls", FieldType::Object, "see walls", "none", "-", "wall particles"}}});
+      {"walls", FieldType::Object, "see walls", "none", "-", "wall particles"},
+      {"gravity_loading", FieldType::Object, "see gravity_loading", "none", "-",
+       "a gravity-loading stage before t = 0 (solids settle under their weight)"}}});
 
 const bool documented_kernel = register_section(
     {"kernel", "kernel", "The SPH smoothing kernel and its smoothing length h.",
@@ -172,6 +175,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
 
   for (auto& b : top.array_of_objects("bodies")) s.bodies.push_back(parse_body(b, s));
   if (auto w = top.optional_object("walls")) s.walls = parse_walls(*w, d);
+  if (auto g = top.optional_object("gravity_loading")) s.gravity_loading = parse_gravity_loading(*g);
   top.reject_unknown();
   validate_scene(s);
   return s;
@@ -415,6 +419,17 @@ void validate_scene(const Scene& s) {
       if (s.walls.boundaries[c].lo[a] < s.domain.lo[a] || s.walls.boundaries[c].hi[a] > s.domain.hi[a])
         fail("walls.boundaries[" + std::to_string(c) + "].shape", std::string("extends outside the domain along ") + axes[a]);
   if (s.gravity_ramp > s.t_end) fail("time.gravity_ramp", "must not exceed time.end");
+  if (s.gravity_loading.active) {
+    if (!s.has_soil()) fail("gravity_loading", "needs a soil or structure body (it settles the solids under their weight)");
+    if (s.gravity[0] == 0 && s.gravity[1] == 0 && s.gravity[2] == 0) fail("gravity_loading", "needs gravity");
+    if (s.gravity_ramp > 0) fail("gravity_loading", "and time.gravity_ramp exclude each other (use gravity_loading.ramp)");
+    if (s.two_phase()) fail("gravity_loading", "is not yet available for saturated (two-phase) soil");
+    if (s.gravity_loading.model == "elastic")
+      for (const auto& m : s.soils)
+        if (!std::visit([](const auto& mm) { return requires { mm.elastic; }; }, m.model))
+          fail("gravity_loading.model", "\"elastic\" needs constant elastic moduli; \"" + m.name + "\" is " +
+                                            m.model_name() + " (use \"material\")");
+  }
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
     if (s.bodies[b].surcharge.ramp > s.t_end) fail("bodies[" + std::to_string(b) + "].surcharge.ramp", "must not exceed time.end");
   for (std::size_t b = 0; b < s.bodies.size(); ++b)

@@ -80,6 +80,16 @@ struct WallSpec {
   std::vector<BoundarySpec> boundaries;
 };
 
+// The gravity-loading stage before t = 0 (sim/gravity_loading.hpp).
+struct GravityLoadingSpec {
+  bool active = false;
+  std::string model = "elastic";        // elastic | material
+  double damping = 0.8;                 // alpha in [0, 1): Cundall's local damping coefficient
+  double kinetic_energy_ratio = 1e-4;   // the stage ends when KE <= ratio x its peak KE
+  double ramp = 0;                      // s: gravity grows smoothly over this time within the stage
+  double max_time = 20;                 // s: not settled by then is an error naming the field
+};
+
 // Resource limits of a run (not scene fields: the command line sets them, sim/resource_limits.hpp).
 struct RunLimits {
   double max_particles = 2e7;  // --max-particles; ~8 GB of a soil scene
@@ -117,6 +127,7 @@ struct Scene {
   bool has_soil() const { return !soils.empty(); }
   std::vector<BodySpec> bodies;
   WallSpec walls;
+  GravityLoadingSpec gravity_loading;
   bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty() || !walls.boundaries.empty(); }
   // Some container's or boundary's slip differs from walls.slip: the wall particles carry
   // BodyFields::wall_free_slip.

@@ -20,7 +20,7 @@ std::set<std::pair<std::string, std::string>>*& recorder() {
 // reading order of the scene: the top level, then each section as the reader meets it
 int rank(const std::string& tag) {
   static const std::vector<std::string> order = {"scene", "kernel", "domain", "time", "output", "numerics",
-                                                 "materials", "bodies", "walls", "shape"};
+                                                 "materials", "bodies", "walls", "shape", "gravity_loading"};
   const std::string head = tag.substr(0, tag.find_first_of(":."));
   const auto it = std::find(order.begin(), order.end(), head);
   return static_cast<int>(it - order.begin());

@@ -83,8 +83,10 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
 }
 
 std::array<double, 3> Simulation::gravity_at(double t) const {
-  const double f = scene_.gravity_ramp > 0 && t < scene_.gravity_ramp
-                       ? scene_.gravity_ramp_from + (1.0 - scene_.gravity_ramp_from) * smooth_start(t, scene_.gravity_ramp)
+  const double ramp = loading_now_ ? scene_.gravity_loading.ramp : scene_.gravity_ramp;
+  const double from = loading_now_ ? 0.0 : scene_.gravity_ramp_from;
+  const double f = ramp > 0 && t < ramp
+                       ? from + (1.0 - from) * smooth_start(t, ramp)
                        : 1.0;
   return {f * scene_.gravity[0], f * scene_.gravity[1], f * scene_.gravity[2]};
 }
@@ -131,7 +133,7 @@ std::vector<Stage> Simulation::stage_table() {
   };
   // drift
   add(rigid_ != nullptr, {"rigid_motion", Hook::Drift, {"t"}, {"x[rigid]", "v[rigid]"}, {},
-                          [this] { rigid_->advance(P_, t_, dt_); }});
+                          [this] { if (!loading_now_) rigid_->advance(P_, t_, dt_); }});
   // rates at x^{n+1}, v^{n+1/2}
   add(seepage_ != nullptr, {"seepage_porosity_rate", Hook::Rates, {"x", "v", "porosity"}, {"porosity_rate"}, {},
                             [this] { seepage_->porosity_rate(P_, cells_); }});
@@ -159,7 +161,9 @@ std::vector<Stage> Simulation::stage_table() {
                           {"a[fluid]", "drho[fluid]", "rho[fluid]"}, {},
                           [this] { fluid_->rates(P_, cells_, gravity_at(t_), density_dt_); }});
   add(surcharge, {"surcharge", Hook::Forces, {"surcharge", "surcharge_ramp", "t"}, {}, {"a[solid]"},
-                  [this] { apply_surcharge(); }});
+                  [this] { if (!loading_now_) apply_surcharge(); }});  // the loading stage is gravity only
+  add(scene_.gravity_loading.active, {"gravity_loading_damping", Hook::Forces, {"a[solid]", "v[solid]"}, {}, {"a[solid]"},
+                                      [this] { if (loading_now_) apply_local_damping(P_, scene_.gravity_loading.damping); }});
   add(seepage_ != nullptr, {"seepage_coupling", Hook::Forces, {"p", "porosity", "kernel sums"},
                             {"drag_rate", "drag_partner_*"}, {"a[solid]", "a[fluid]"},
                             [this] { seepage_->apply(P_, cells_); }});
@@ -215,7 +219,7 @@ void Simulation::choose_time_step() {
   in.a_max = state_.a_max;
   in.nu_max = fluid_ ? fluid_->max_kinematic_viscosity() : 0.0;
   dt_ = stable_time_step(in, limits_);
-  if (t_ + dt_ > scene_.t_end) dt_ = std::max(scene_.t_end - t_, 1e-300);
+  if (!loading_now_ && t_ + dt_ > scene_.t_end) dt_ = std::max(scene_.t_end - t_, 1e-300);
 }
 
 void Simulation::step() {
@@ -231,7 +235,7 @@ void Simulation::step() {
   for (std::size_t i = 0; i < n; ++i) {
     if (block && block[i] > 0) {  // wall blocks move with their prescribed velocity (ramped: at mid-step)
       const auto& b = blocks[static_cast<std::size_t>(block[i]) - 1];
-      const double f = smooth_start(t_ + half, b.ramp);  // 1 without a ramp
+      const double f = loading_now_ ? 0.0 : smooth_start(t_ + half, b.ramp);  // 1 without a ramp; held while loading
       P.vx[i] = f * b.velocity[0]; P.vy[i] = f * b.velocity[1]; P.vz[i] = f * b.velocity[2];
       P.x[i] += dt * P.vx[i]; P.y[i] += dt * P.vy[i]; P.z[i] += dt * P.vz[i];
       continue;
@@ -277,9 +281,54 @@ void Simulation::restore_run_state(const RunState& s) {
   state_ = {get("state_summary", 2)[0], get("state_summary", 2)[1]};
   if (soil_) soil_->restore_max_wave_speed(get("soil_max_wave_speed", 1)[0]);
   if (rigid_) rigid_->restore_state(get("rigid_motion", 0));
+  loading_.ran = scene_.gravity_loading.active;  // the checkpoint holds the settled state
+}
+
+const GravityLoadingResult& Simulation::settle_under_gravity() {
+  const GravityLoadingSpec& g = scene_.gravity_loading;
+  if (!g.active || loading_.ran) return loading_;
+  loading_now_ = true;
+  if (soil_) soil_->set_elastic_only(g.model == "elastic");
+  auto hold_rigid = [this] {
+    for (std::size_t i = 0; i < P_.size(); ++i)
+      if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+  };
+  hold_rigid();
+  run_hook(Hook::Forces);  // at the loading stage's gravity of t = 0
+  choose_time_step();
+  double peak = 0, ke = 0;
+  long steps = 0;
+  while (true) {
+    step();
+    ++steps;
+    ke = solid_kinetic_energy(P_);
+    peak = std::max(peak, ke);
+    if (t_ >= g.ramp && steps >= 20 && ke <= g.kinetic_energy_ratio * peak) break;
+    if (t_ > g.max_time) {
+      loading_now_ = false;
+      throw InputError(scene_.file + ": field 'gravity_loading.max_time': the solids have not settled in " +
+                       std::to_string(g.max_time) + " s (" + std::to_string(steps) + " steps): kinetic energy " +
+                       std::to_string(ke) + " J" + (scene_.dim == 2 ? "/m" : "") + " is " +
+                       std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak, above kinetic_energy_ratio " +
+                       std::to_string(g.kinetic_energy_ratio) + "; raise max_time or damping, or the slope is failing");
+    }
+  }
+  loading_ = {true, steps, t_, peak, ke};
+  loading_now_ = false;
+  if (soil_) soil_->set_elastic_only(false);
+  for (std::size_t i = 0; i < P_.size(); ++i)
+    if (P_.kind[i] == Kind::Soil || P_.kind[i] == Kind::Structure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+  t_ = 0;
+  step_ = 0;
+  if (rigid_) rigid_->set_velocities(P_, 0.0);
+  run_hook(Hook::Forces);
+  state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
+  choose_time_step();
+  return loading_;
 }
 
 void Simulation::run(const std::function<void(const Simulation&)>& observe, double until) {
+  settle_under_gravity();
   const double t_stop = until > 0 ? std::min(until, scene_.t_end) : scene_.t_end;
   while (t_ < t_stop * (1 - 1e-12) && step_ < scene_.max_steps && !stop_) {
     if (t_ + dt_ > t_stop) dt_ = t_stop - t_;

@@ -23,6 +23,7 @@
 #include "core/time_step.hpp"
 #include "fluid/fluid_forces.hpp"
 #include "io/scene.hpp"
+#include "sim/gravity_loading.hpp"
 #include "sim/stability.hpp"
 #include "sim/stages.hpp"
 #include "soil/soil_forces.hpp"
@@ -38,6 +39,11 @@ class Simulation {
 
   // Advances one step; throws InstabilityError with a diagnosis if the state blows up.
   void step();
+  // The scene's gravity-loading stage (sim/gravity_loading.hpp), if it has one and it has not run:
+  // the solids settle under their weight before t = 0. run() calls it first; a restart skips it.
+  // Throws InputError naming gravity_loading.max_time if the solids do not settle.
+  const GravityLoadingResult& settle_under_gravity();
+  const GravityLoadingResult& gravity_loading() const { return loading_; }
   // Runs to scene.time.end (or `until`), calling `observe` after every step.
   void run(const std::function<void(const Simulation&)>& observe = {}, double until = -1);
 
@@ -105,6 +111,8 @@ class Simulation {
   double density_dt_ = 0;  // the step the density stage last predicted the fluid density with (0 before the first)
   long step_ = 0;
   bool stop_ = false;
+  bool loading_now_ = false;  // inside the gravity-loading stage
+  GravityLoadingResult loading_;
 };
 
 }  // namespace geosph

@@ -173,7 +173,19 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       }
     const auto mat = P.material[i];
     const materials::SolidUpdate r = std::visit(
-        [&](const auto& model) { return model.update(sv.get(i), de, dw, states[mat], i); }, scene_.soils[mat].model);
+        [&](const auto& model) -> materials::SolidUpdate {
+          if constexpr (requires { model.elastic; }) {
+            if (elastic_only_) {  // Hooke with the model's own E, nu: sigma + dsigma = lambda tr(de) I + 2 G de
+              const double E = model.elastic.young, nu = model.elastic.poisson;
+              const double G = E / (2.0 * (1.0 + nu)), lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+              Eigen::Matrix3d s = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + (2.0 * G) * de;
+              s.diagonal().array() += lambda * de.trace();
+              return {s, 0.0, true};
+            }
+          }
+          return model.update(sv.get(i), de, dw, states[mat], i);
+        },
+        scene_.soils[mat].model);
     if (!r.converged) {
 #pragma omp critical
       if (unconverged < 0 || static_cast<long>(i) < unconverged) unconverged = static_cast<long>(i);

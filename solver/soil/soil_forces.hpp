@@ -45,6 +45,9 @@ class SoilForces {
   // Jaumann rotation, return mapping). Throws InstabilityError if a stress becomes non-finite or a
   // Modified Cam Clay return does not converge.
   void update_stress(Particles& P, const CellList& cells, double dt, long step, double time) const;
+  // The gravity-loading stage's "elastic" mode (sim/gravity_loading.hpp): models with constant moduli
+  // update the stress elastically (Jaumann rotation + Hooke), without their plastic return.
+  void set_elastic_only(bool on) const { elastic_only_ = on; }
   // Accelerations of soil particles (after the wall particles carry their extrapolated stress).
   void momentum(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
@@ -70,6 +73,7 @@ class SoilForces {
   std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
   mutable double max_wave_speed_ = 0;
+  mutable bool elastic_only_ = false;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
   mutable std::vector<double> mass_, rho_, ghost_vx_, ghost_vy_, ghost_vz_;
 };

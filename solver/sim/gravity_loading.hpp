@@ -1,0 +1,34 @@
+// The gravity-loading stage: the standard geotechnical start for sloping ground. Before t = 0 the
+// scene's solids are loaded by their weight (optionally ramped) and settle under local non-viscous
+// damping, a_c -= alpha |a_c| sign(v_c) per component (Cundall 1987, "Distinct element models of rock
+// and soil structure", in Analytical and Computational Methods in Engineering Rock Mechanics, ch. 4;
+// the "local damping" of Itasca's FLAC), until their kinetic energy has fallen below a fraction of its
+// peak. With "elastic" the solids are linear elastic during the stage (their own E and nu), so the
+// stage finds the elastic equilibrium stress; with "material" they follow their own model. Then the
+// velocities are zeroed, time restarts at 0, and the run proper begins from the settled state.
+#pragma once
+#include <string>
+
+#include "core/particles.hpp"
+#include "io/json_fields.hpp"
+#include "io/scene.hpp"
+
+namespace geosph {
+
+
+// gravity_loading (a top-level section; GravityLoadingSpec in io/scene.hpp).
+GravityLoadingSpec parse_gravity_loading(const JsonFields& f);
+
+// What the stage did, for the run's log and records.
+struct GravityLoadingResult {
+  bool ran = false;
+  long steps = 0;
+  double time = 0, peak_kinetic_energy = 0, final_kinetic_energy = 0;
+};
+
+// Cundall's local damping on the solid particles' accelerations (moving solids only).
+void apply_local_damping(Particles& P, double alpha);
+// Kinetic energy of the solid particles (soil and structures).
+double solid_kinetic_energy(const Particles& P);
+
+}  // namespace geosph

@@ -1,0 +1,105 @@
+// The gravity-loading stage (sim/gravity_loading.hpp): an elastic column loaded from rest settles
+// under local damping, its velocities are zeroed and time restarts at 0; a column that cannot settle
+// in max_time stops with an error naming the field; scenes the stage cannot serve are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "io/scene.hpp"
+#include "sim/simulation.hpp"
+#include "soil/soil_fields.hpp"
+
+using namespace geosph;
+using nlohmann::json;
+
+namespace {
+
+json column(double dx) {
+  json j = json::parse(R"({
+    "name": "elastic_column", "dimension": 2,
+    "domain": {"min": [-0.5, -0.5], "max": [1.5, 6.0]},
+    "gravity": [0, -9.81],
+    "time": {"end": 0.001},
+    "materials": {"soil": {"model": "linear_elastic", "density": 2000, "young_modulus": 1e7, "poisson_ratio": 0.3}},
+    "bodies": [{"material": "soil", "shape": "box", "min": [0, 0], "max": [1, 5]}],
+    "walls": {"type": "dummy", "slip": "free_slip", "containers": [{"min": [0, 0], "max": [1, 5.5], "open": ["top"]}]},
+    "gravity_loading": {"model": "elastic", "ramp": 0.5, "max_time": 20}
+  })");
+  j["dx"] = dx;
+  return j;
+}
+
+}  // namespace
+
+// Loaded from rest, the laterally confined elastic column reaches sigma_h = K0 sigma_v with the elastic
+// K0 = nu/(1 - nu) between the top 1.5 m and the bottom 0.5 m (measured 1.000 +/- 0.001 at dx = 0.1 m;
+// 1% allows for the kinetic energy left at the stopping ratio; the floor's three rows, where the dummy
+// floor meets the free-slip side walls, are 1-12% off). sigma_v itself is not tested here: it carries the
+// free-surface offset recorded in issue 17 (item 3), about 3 kPa at every dx.
+TEST(GravityLoading, ElasticColumnSettlesAtItsK0) {
+  Simulation sim(parse_scene(column(0.1), "column.json"));
+  const GravityLoadingResult& r = sim.settle_under_gravity();
+  ASSERT_TRUE(r.ran);
+  EXPECT_GT(r.time, 0.5);  // at least the ramp
+  EXPECT_LE(r.final_kinetic_energy, 1e-4 * r.peak_kinetic_energy);
+  EXPECT_EQ(sim.time(), 0.0);
+  EXPECT_EQ(sim.steps(), 0);
+  const Particles& P = sim.particles();
+  const auto& sxx = P.field(SoilFields::xx), &syy = P.field(SoilFields::yy);
+  std::map<long, std::pair<double, double>> rows;  // row -> (sum sigma_h, sum sigma_v)
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    EXPECT_EQ(P.vx[i], 0.0);
+    EXPECT_EQ(P.vy[i], 0.0);
+    auto& row = rows[std::lround(P.y[i] / 0.1 - 0.5)];
+    row.first += sxx[i];
+    row.second += syy[i];
+  }
+  const double K0 = 0.3 / 0.7;
+  int checked = 0;
+  for (const auto& [row, s] : rows) {
+    const double y = (row + 0.5) * 0.1;
+    if (y > 5.0 - 1.5 || y < 0.5) continue;
+    EXPECT_NEAR(s.first / s.second / K0, 1.0, 0.01) << "row " << row;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 30);
+  sim.run();  // continues from the settled state
+  EXPECT_NEAR(sim.time(), 0.001, 1e-12);
+}
+
+TEST(GravityLoading, NotSettledByMaxTimeNamesTheField) {
+  json j = column(0.1);
+  j["gravity_loading"] = {{"model", "elastic"}, {"max_time", 0.05}};
+  Simulation sim(parse_scene(j, "column.json"));
+  try {
+    sim.settle_under_gravity();
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("column.json: field 'gravity_loading.max_time'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GravityLoading, RefusedWhereItCannotServe) {
+  auto message = [](const json& j) {
+    try {
+      parse_scene(j, "bad.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  json j = column(0.1);
+  j["time"]["gravity_ramp"] = 0.0005;
+  EXPECT_NE(message(j).find("'gravity_loading': and time.gravity_ramp exclude each other"), std::string::npos) << message(j);
+  j = column(0.1);
+  j["materials"]["soil"] = json::parse(R"({"model": "modified_cam_clay", "density": 2000, "lambda": 0.2,
+      "kappa": 0.04, "critical_state_slope": 1.2, "poisson_ratio": 0.3, "void_ratio": 1.0})");
+  j["bodies"][0]["initial"] = "geostatic";
+  EXPECT_NE(message(j).find("'gravity_loading.model': \"elastic\" needs constant elastic moduli"), std::string::npos)
+      << message(j);
+  j = column(0.1);
+  j["gravity_loading"]["damping"] = 1.0;
+  EXPECT_NE(message(j).find("'gravity_loading.damping'"), std::string::npos) << message(j);
+}
