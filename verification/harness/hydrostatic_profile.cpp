@@ -1,8 +1,21 @@
 #include "harness/hydrostatic_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace geosph::verify {
+
+void FluidTimeAverage::sample(const Particles& P, double t) {
+  if (t < t0_) return;
+  ++samples_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    auto& s = sum_[static_cast<std::size_t>(P.id[i])];
+    s[0] += P.p[i]; s[1] += P.x[i]; s[2] += P.y[i]; s[3] += P.z[i];
+    seen_[static_cast<std::size_t>(P.id[i])] = 1;
+    vmax_ = std::max(vmax_, std::sqrt(P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]));
+  }
+}
 
 void HydrostaticProfile::add(double p, double y) {
   p_sim_.push_back(p);

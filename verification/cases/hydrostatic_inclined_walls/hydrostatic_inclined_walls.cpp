@@ -50,37 +50,22 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   const auto ref = column_with_surface(water, g, H);
   const auto& wall = *scene.walls.boundaries.front().shape;
 
-  const double t_avg = 0.75 * scene.t_end;
-  const std::size_t n = sim.particles().size();
-  std::vector<double> psum(n, 0), xsum(n, 0), ysum(n, 0), zsum(n, 0);
-  long samples = 0;
-  const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
-    if (s.time() < t_avg) return;
-    const auto& P = s.particles();
-    ++samples;
-    for (std::size_t i = 0; i < P.size(); ++i) {
-      if (P.kind[i] != Kind::Fluid) continue;
-      psum[P.id[i]] += P.p[i];
-      xsum[P.id[i]] += P.x[i];
-      ysum[P.id[i]] += P.y[i];
-      zsum[P.id[i]] += P.z[i];
-    }
-  }, ctx.progress);
+  FluidTimeAverage avg(sim.particles().size(), 0.75 * scene.t_end);  // the last quarter
+  const bool ok = run_timed(sim, rec, [&](const Simulation& s) { avg.sample(s.particles(), s.time()); }, ctx.progress);
 
-  if (ok && samples > 0) {
+  if (ok && avg.samples() > 0) {
     HydrostaticProfile profile(ref, scene.dx);
     std::vector<double> near_sim, near_ref;
     const double floor_y = 0.5 * scene.dx;  // the floor row is the box-wall case's business
-    for (std::size_t k = 0; k < n; ++k) {
-      if (psum[k] == 0 && ysum[k] == 0) continue;
-      const geometry::Point q{xsum[k] / samples, ysum[k] / samples, zsum[k] / samples};
-      const double p = psum[k] / samples, height = q[up];
+    avg.for_each([&](double p, double x, double y, double z) {
+      const geometry::Point q{x, y, z};
+      const double height = q[up];
       profile.add(p, height);
       if (-wall.distance(q) < 2 * scene.dx && height > floor_y) {
         near_sim.push_back(p);
         near_ref.push_back(ref.pressure(height));
       }
-    }
+    });
     add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(profile.simulated(), profile.reference()));
     rec.extra["near_wall_pressure_rel_l2"] = relative_l2(near_sim, near_ref);
     rec.extra["near_wall_particles"] = static_cast<double>(near_sim.size());

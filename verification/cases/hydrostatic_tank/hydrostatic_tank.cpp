@@ -29,27 +29,13 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const auto& water = scene.materials.front();
   const reference::HydrostaticTait ref(water.density, water.sound_speed, water.gamma, g, H0);
 
-  // time-average pressure and height of every fluid particle (by original id) over the last quarter
-  const double t_avg = 0.75 * scene.t_end;
-  const std::size_t n = sim.particles().size();
-  std::vector<double> psum(n, 0), ysum(n, 0), vmax_window(1, 0);
-  long samples = 0;
-  const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
-    if (s.time() < t_avg) return;
-    const auto& P = s.particles();
-    ++samples;
-    for (std::size_t i = 0; i < P.size(); ++i) {
-      if (P.kind[i] != Kind::Fluid) continue;
-      psum[P.id[i]] += P.p[i];
-      ysum[P.id[i]] += P.y[i];
-      vmax_window[0] = std::max(vmax_window[0], std::hypot(P.vx[i], P.vy[i]));
-    }
-  }, ctx.progress);
+  // time-average pressure and height of every fluid particle over the last quarter
+  FluidTimeAverage avg(sim.particles().size(), 0.75 * scene.t_end);
+  const bool ok = run_timed(sim, rec, [&](const Simulation& s) { avg.sample(s.particles(), s.time()); }, ctx.progress);
 
-  if (ok && samples > 0) {
+  if (ok && avg.samples() > 0) {
     HydrostaticProfile profile(ref, scene.dx);
-    for (std::size_t k = 0; k < n; ++k)
-      if (psum[k] != 0 || ysum[k] != 0) profile.add(psum[k] / samples, ysum[k] / samples);
+    avg.for_each([&](double p, double, double y, double) { profile.add(p, y); });
     add_case_metric(rec, cfg, "pressure_rel_l2", relative_l2(profile.simulated(), profile.reference()));
 
     long leaked = 0;
@@ -58,7 +44,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       if (P.kind[i] == Kind::Fluid && (P.x[i] < wall.lo[0] || P.x[i] > wall.hi[0] || P.y[i] < wall.lo[1])) ++leaked;
     add_case_metric(rec, cfg, "leaked_particles", static_cast<double>(leaked));
     // spurious currents, recorded for information (no published bound to test against)
-    rec.extra["max_speed_over_sqrt_gH"] = vmax_window[0] / std::sqrt(g * H0);
+    rec.extra["max_speed_over_sqrt_gH"] = avg.max_speed() / std::sqrt(g * H0);
     rec.series = profile.series();
     rec.extra["settled_surface_height_m"] = ref.surface_height();
   } else {
