@@ -5,7 +5,9 @@
 //   sigma_w = ( sum_s sigma_s W_ws - I (g - a_w) . sum_s rho_s r_ws W_ws ) / sum_s W_ws,  r_ws = x_w - x_s
 // No slip: the shear components are copied and the velocity is v_w = 2 v_wall - v~ (Adami eq. 23),
 // so the wall shears the soil. Free slip: the shear components are mirrored (sigma_w,ab = -sigma~_ab,
-// a != b), which gives zero shear traction on the axis-aligned container walls, and the wall's ghost
+// a != b), which gives zero shear traction on the axis-aligned container walls (at a wall of any shape,
+// walls.boundaries, the stress is mirrored across its tangent plane, H sigma H with H = I - 2 n n^T
+// and n the surface normal the particle carries), and the wall's ghost
 // velocity keeps the soil's tangential velocity and mirrors its normal velocity about the wall's,
 // v_w = v~ + 2 ((v_wall - v~).n) n, n the wall normal into the soil (the kernel-weighted mean offset
 // to the soil neighbours; the free-slip counterpart of Adami eq. 23 applied to the normal component

@@ -1,7 +1,7 @@
 // A simple polygon with holes (2D) and its extrusion along z (3D). The inside test is the winding
-// number (Hormann & Agathos 2001, "The point in polygon problem for arbitrary polygons", Comput. Geom.
-// 20, algorithm 6), exact in sign for points off the boundary; a point on an edge is outside (see
-// Shape::contains). Construction rejects what has no inside: fewer than 3 vertices, zero area, repeated
+// number by signed edge crossings (Sunday's rule; Hormann & Agathos 2001, "The point in polygon
+// problem for arbitrary polygons", Comput. Geom. 20), exact in sign for points off the boundary; a
+// point on an edge is decided by Shape::contains. Construction rejects what has no inside: fewer than 3 vertices, zero area, repeated
 // vertices, edges that cross or touch, holes that leave the outline or meet each other.
 #pragma once
 #include <stdexcept>
