@@ -11,9 +11,12 @@
 #   libbenchmark-dev        throughput benchmarks (particle-steps per second)
 #   python3-matplotlib python3-numpy python3-h5py   report generator and its figures
 #   liggghts                DEM references for granular collapse (reference/dem)
+#   libcgal-dev             closed triangulated surfaces (STL shapes): AABB-tree distances and the
+#                           side-of-mesh inside test, robust where a hand-written ray cast is not
 set -euo pipefail
 PKGS=(cmake g++ make pkg-config libeigen3-dev libgsl-dev libhdf5-dev nlohmann-json3-dev libcli11-dev
-      libgtest-dev libbenchmark-dev python3 python3-matplotlib python3-numpy python3-h5py liggghts)
+      libgtest-dev libbenchmark-dev python3 python3-matplotlib python3-numpy python3-h5py liggghts
+      libcgal-dev)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

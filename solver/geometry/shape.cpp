@@ -156,7 +156,7 @@ double cell_measure(const Shape& s, const Point& lo, double h, int levels) {
 bool Shape::contains(const Point& p, double dx) const {
   static constexpr double kTilt[3] = {0.7236, 0.5491, 0.4184};  // a unit vector of no lattice or edge direction
   const double e = 1e-7 * dx;
-  return distance({p[0] + e * kTilt[0], p[1] + e * kTilt[1], p[2] + (dim_ == 3 ? e * kTilt[2] : 0.0)}) < 0;
+  return inside({p[0] + e * kTilt[0], p[1] + e * kTilt[1], p[2] + (dim_ == 3 ? e * kTilt[2] : 0.0)});
 }
 
 ShapePtr make_box(int dim, Point lo, Point hi) { return std::make_shared<Box>(dim, lo, hi); }

@@ -28,6 +28,8 @@ class Shape {
   // Area (2D) or volume (3D) in closed form; negative where there is none (union, difference).
   virtual double exact_measure() const = 0;
   virtual std::string describe() const = 0;
+  // distance(p) < 0; a shape whose inside test is cheaper than its distance overrides it.
+  virtual bool inside(const Point& p) const { return distance(p) < 0; }
   // Inside, for a lattice of spacing dx. A point on the surface (a lattice point on a 45-degree edge,
   // or on the face two shapes share) is decided at a fixed offset of 1e-7 dx along a direction that no
   // lattice line shares (simulation of simplicity, Edelsbrunner & Muecke 1990), so of two shapes that

@@ -1,6 +1,9 @@
 #include "geometry/shape_input.hpp"
 
+#include <filesystem>
+
 #include "geometry/polygon.hpp"
+#include "geometry/stl_mesh.hpp"
 #include "io/scene_reference.hpp"
 
 namespace geosph {
@@ -8,16 +11,18 @@ namespace geosph {
 namespace {
 
 const std::vector<std::string> kTypes2 = {"box", "polygon", "circle", "union", "difference"};
-const std::vector<std::string> kTypes3 = {"box", "sphere", "cylinder", "extrusion", "union", "difference"};
+const std::vector<std::string> kTypes3 = {"box", "sphere", "cylinder", "extrusion", "stl", "union", "difference"};
 
 const bool documented = register_section(
     {"shape", "shape (bodies[k].shape, walls.boundaries[k].shape, shape.parts[k])",
      "A body's or wall's shape: a primitive, or the union or difference of shapes. Particles fill the points (i + 1/2) dx "
      "inside it (one lattice anchored at the origin, shared by every shape).",
-     {choice_doc("type", {"box", "polygon", "circle", "sphere", "cylinder", "extrusion", "union", "difference"},
+     {choice_doc("type", {"box", "polygon", "circle", "sphere", "cylinder", "extrusion", "stl", "union", "difference"},
                  "required",
-                 "2D: box, polygon, circle; 3D: box, sphere, cylinder, extrusion (a polygon extruded along z); both: "
-                 "union, difference (parts[0] less the other parts)"),
+                 "2D: box, polygon, circle; 3D: box, sphere, cylinder, extrusion (a polygon extruded along z), stl (a "
+                 "closed triangulated surface); both: union, difference (parts[0] less the other parts)"),
+      {"file", FieldType::Text, "an STL file (ASCII or binary), closed", "required (stl)", "-",
+       "stl: the surface, relative to the scene file's folder"},
       {"min", FieldType::Vector, "dimension numbers", "required (box)", "m", "box: lower corner"},
       {"max", FieldType::Vector, "dimension numbers, > min", "required (box)", "m", "box: upper corner"},
       {"vertices", FieldType::Points, "points [x, y]; >= 3, a simple polygon", "required (polygon, extrusion)", "m",
@@ -56,6 +61,14 @@ geometry::ShapePtr parse(const JsonFields& f, int dim, int depth) {
     const std::string axis = f.choice("axis", {"x", "y", "z"}, "z");
     s = geometry::make_cylinder(f.vector("centre", 3), axis[0] - 'x', f.number("radius", Range::positive()),
                                 f.number("length", Range::positive()));
+  } else if (type == "stl") {
+    const std::filesystem::path rel = f.text("file");
+    const auto path = rel.is_absolute() ? rel : std::filesystem::path(f.file()).parent_path() / rel;
+    try {
+      s = geometry::make_stl(path);
+    } catch (const geometry::ShapeError& e) {
+      f.fail("file", e.what());
+    }
   } else if (type == "polygon" || type == "extrusion") {
     const auto outline = ring_of(f.points("vertices", 2));
     std::vector<geometry::Ring> holes;

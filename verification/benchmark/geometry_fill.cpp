@@ -4,9 +4,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "geometry/lattice_fill.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/stl_mesh.hpp"
 
 using namespace geosph::geometry;
 
@@ -46,8 +49,44 @@ void BM_WallShellCylinder(benchmark::State& state) {  // three layers of a 2 m t
   report(state, n);
 }
 
+// A UV sphere of radius 0.5 as an STL (128 x 64 quads, 16k triangles), filled at dx = 0.008 (1e6 points):
+// the CGAL side-of-mesh test and AABB distance per lattice point.
+void BM_FillStlSphere(benchmark::State& state) {
+  const auto path = std::filesystem::temp_directory_path() / "geosph_bench_sphere.stl";
+  {
+    std::ofstream o(path);
+    o << "solid s\n";
+    const int nu = 128, nv = 64;
+    auto P = [&](int i, int j) {
+      if (j == 0 || j == nv) return std::array<double, 3>{0.5, 0.5, j == 0 ? 1.0 : 0.0};  // the poles
+      const double th = M_PI * j / nv, ph = 2 * M_PI * i / nu;
+      return std::array<double, 3>{0.5 + 0.5 * std::sin(th) * std::cos(ph), 0.5 + 0.5 * std::sin(th) * std::sin(ph),
+                                   0.5 + 0.5 * std::cos(th)};
+    };
+    auto tri = [&](std::array<double, 3> a, std::array<double, 3> b, std::array<double, 3> c) {
+      o << "facet normal 0 0 0\nouter loop\n";
+      for (const auto& v : {a, b, c}) o << "vertex " << v[0] << " " << v[1] << " " << v[2] << "\n";
+      o << "endloop\nendfacet\n";
+    };
+    o.precision(17);
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i) {
+        const int i1 = (i + 1) % nu;  // the seam shares its vertices
+        const auto a = P(i, j), b = P(i1, j), c = P(i1, j + 1), d = P(i, j + 1);
+        if (j > 0) tri(a, c, b);
+        if (j < nv - 1) tri(a, d, c);
+      }
+    o << "endsolid s\n";
+  }
+  const auto s = make_stl(path);
+  std::size_t n = 0;
+  for (auto _ : state) n = fill_lattice(*s, 0.008).size();
+  report(state, n);
+}
+
 }  // namespace
 
+BENCHMARK(BM_FillStlSphere)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FillSphere)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillTunnel)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FillSlope2D)->Unit(benchmark::kMillisecond);

@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
 
 #include "boundary/geometry.hpp"
 #include "boundary/soil_wall.hpp"
@@ -11,6 +15,7 @@
 #include "soil/soil_forces.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/stl_mesh.hpp"
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
 
@@ -262,4 +267,88 @@ TEST(Geometry, FreeSlipShapedWallMirrorsTheSoilStress) {
     ++checked;
   }
   EXPECT_GT(checked, 10);
+}
+
+namespace {
+
+// The unit cube [0, 1]^3 as 12 triangles (outward), less `drop` triangles from the end (an open surface).
+std::vector<std::array<std::array<float, 3>, 3>> cube_triangles(std::size_t drop = 0) {
+  const float c[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  std::vector<std::array<std::array<float, 3>, 3>> t;
+  for (std::size_t k = 0; k + drop < 12; ++k)
+    t.push_back({{{c[f[k][0]][0], c[f[k][0]][1], c[f[k][0]][2]}, {c[f[k][1]][0], c[f[k][1]][1], c[f[k][1]][2]},
+                  {c[f[k][2]][0], c[f[k][2]][1], c[f[k][2]][2]}}});
+  return t;
+}
+
+std::filesystem::path write_ascii_stl(const std::string& name, const std::vector<std::array<std::array<float, 3>, 3>>& t) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream o(path);
+  o << "solid cube\n";
+  for (const auto& tri : t) {
+    o << " facet normal 0 0 0\n  outer loop\n";
+    for (const auto& v : tri) o << "   vertex " << v[0] << " " << v[1] << " " << v[2] << "\n";
+    o << "  endloop\n endfacet\n";
+  }
+  o << "endsolid cube\n";
+  return path;
+}
+
+std::filesystem::path write_binary_stl(const std::string& name, const std::vector<std::array<std::array<float, 3>, 3>>& t) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream o(path, std::ios::binary);
+  const std::string header(80, ' ');
+  o.write(header.data(), 80);
+  const std::uint32_t n = static_cast<std::uint32_t>(t.size());
+  o.write(reinterpret_cast<const char*>(&n), 4);
+  for (const auto& tri : t) {
+    const float normal[3] = {0, 0, 0};
+    o.write(reinterpret_cast<const char*>(normal), 12);
+    for (const auto& v : tri) o.write(reinterpret_cast<const char*>(v.data()), 12);
+    const std::uint16_t attr = 0;
+    o.write(reinterpret_cast<const char*>(&attr), 2);
+  }
+  return path;
+}
+
+}  // namespace
+
+// A closed STL (ASCII and binary) is a solid: volume, inside test, distance; an open one is refused.
+TEST(Geometry, StlSurfaces) {
+  for (const auto& path : {write_ascii_stl("geosph_cube_ascii.stl", cube_triangles()),
+                           write_binary_stl("geosph_cube_binary.stl", cube_triangles())}) {
+    const auto s = make_stl(path);
+    EXPECT_NEAR(s->exact_measure(), 1.0, 1e-12) << path;
+    EXPECT_NEAR(s->distance({0.5, 0.5, 0.5}), -0.5, 1e-12);
+    EXPECT_NEAR(s->distance({0.5, 0.5, 1.25}), 0.25, 1e-12);
+    EXPECT_NEAR(s->distance({0.2, 0.5, 0.5}), -0.2, 1e-12);
+    EXPECT_EQ(fill_lattice(*s, 0.1).size(), 1000u);  // the lattice (i + 1/2) dx inside the unit cube
+    const auto n = outward_normal(*s, {1.0, 0.4, 0.6}, 1e-4);
+    EXPECT_NEAR(n[0], 1.0, 1e-9);
+  }
+  expect_shape_error([] { make_stl(write_ascii_stl("geosph_cube_open.stl", cube_triangles(1))); }, "not closed");
+  // in a scene: the file is found next to the scene file, and an open surface names the field
+  json j = json::parse(R"({
+    "name": "stl_body", "dimension": 3, "dx": 0.1,
+    "domain": {"min": [-0.5, -0.5, -0.5], "max": [1.5, 1.5, 1.5]},
+    "gravity": [0, 0, -9.81], "time": {"end": 0.001},
+    "materials": {"water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
+    "bodies": [{"material": "water", "shape": {"type": "stl", "file": "geosph_cube_binary.stl"}}]
+  })");
+  const std::string scene_file = (std::filesystem::temp_directory_path() / "stl_scene.json").string();
+  std::vector<BodyFill> fills;
+  build_particles(parse_scene(j, scene_file), &fills);
+  EXPECT_EQ(fills.at(0).particles, 1000u);
+  EXPECT_NEAR(fills.at(0).shape_mass, 1000.0, 1e-9);
+  j["bodies"][0]["shape"]["file"] = "geosph_cube_open.stl";
+  try {
+    parse_scene(j, scene_file);
+    ADD_FAILURE() << "open STL accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'bodies[0].shape.file'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not closed (3 border edges)"), std::string::npos) << e.what();
+  }
+  expect_shape_error([] { make_stl(std::filesystem::temp_directory_path() / "geosph_no_such.stl"); }, "cannot be read");
 }
