@@ -227,18 +227,33 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills) {
     std::vector<geometry::Point> pts = geometry::fill_lattice(*b.shape, s.dx, (wall == Kind::RepulsiveWall ? 1 : L) * s.dx);
     if (wall == Kind::RepulsiveWall) {
       std::vector<geometry::Point> on_surface;
+      // the kept points by cell of size dx/2: a point closer than dx/2 lies in a neighbouring cell
+      std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+      const auto cell_of = [&](const geometry::Point& q) {
+        return std::array<long, 3>{std::lround(std::floor(q[0] / (0.5 * s.dx))), std::lround(std::floor(q[1] / (0.5 * s.dx))),
+                                   std::lround(std::floor(q[2] / (0.5 * s.dx)))};
+      };
       for (const auto& p : pts) {
         const geometry::Point n = geometry::outward_normal(*b.shape, p, 1e-3 * s.dx);
         const double d = b.shape->distance(p);
         const double move = -0.5 * s.dx - d;  // along the outward normal, to the distance -dx/2
         geometry::Point q{p[0] + move * n[0], p[1] + move * n[1], p[2] + move * n[2]};
+        const auto c = cell_of(q);
         bool crowded = false;
-        for (auto it = on_surface.rbegin(); it != on_surface.rend() && !crowded; ++it) {
-          double r2 = 0;
-          for (int a = 0; a < 3; ++a) r2 += (q[a] - (*it)[a]) * (q[a] - (*it)[a]);
-          crowded = r2 < 0.25 * s.dx * s.dx;
-        }
-        if (!crowded) on_surface.push_back(q);
+        for (long i = -1; i <= 1 && !crowded; ++i)
+          for (long j = -1; j <= 1 && !crowded; ++j)
+            for (long k = -1; k <= 1 && !crowded; ++k) {
+              const auto it = cells.find({c[0] + i, c[1] + j, c[2] + k});
+              if (it == cells.end()) continue;
+              for (const std::size_t o : it->second) {
+                double r2 = 0;
+                for (int a = 0; a < 3; ++a) r2 += (q[a] - on_surface[o][a]) * (q[a] - on_surface[o][a]);
+                crowded = crowded || r2 < 0.25 * s.dx * s.dx;
+              }
+            }
+        if (crowded) continue;
+        cells[c].push_back(on_surface.size());
+        on_surface.push_back(q);
       }
       pts = std::move(on_surface);
     }

@@ -10,7 +10,10 @@ namespace geosph::geometry {
 // The lattice points inside s; with shell > 0 only those within shell of its surface (the wall layers
 // of a solid wall). Visits the points in lattice order, x fastest.
 std::vector<Point> fill_lattice(const Shape& s, double dx, double shell = 0);
-// Some lattice point of a lies inside b (shapes that only touch share none).
+// Some lattice point lies inside s (stops at the first).
+bool holds_lattice_point(const Shape& s, double dx);
+// Some lattice point lies inside both a and b (shapes that only touch share none; symmetric, since
+// both are read on the one lattice).
 bool shapes_overlap(const Shape& a, const Shape& b, double dx);
 
 }  // namespace geosph::geometry

@@ -198,8 +198,7 @@ static geometry::ShapePtr shape_of(const Scene& s, const BodySpec& b) {
 // the other.
 static bool bodies_overlap(const Scene& s, const BodySpec& a, const BodySpec& b) {
   if (!a.shape && !b.shape) return overlap_volume(s.dim, a.lo, a.hi, b.lo, b.hi) > 1e-9 * std::pow(s.dx, s.dim);
-  return geometry::shapes_overlap(*shape_of(s, a), *shape_of(s, b), s.dx) ||
-         geometry::shapes_overlap(*shape_of(s, b), *shape_of(s, a), s.dx);
+  return geometry::shapes_overlap(*shape_of(s, a), *shape_of(s, b), s.dx);
 }
 
 // Structure bodies: none may overlap a soil body at start (the contact would begin with the soil
@@ -385,7 +384,7 @@ void validate_scene(const Scene& s) {
       if (s.walls.blocks[c].lo[a] < s.domain.lo[a] || s.walls.blocks[c].hi[a] > s.domain.hi[a])
         fail("walls.blocks[" + std::to_string(c) + "]", std::string("extends outside the domain along ") + axes[a]);
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
-    if (s.bodies[b].shape && geometry::fill_lattice(*s.bodies[b].shape, s.dx).empty())
+    if (s.bodies[b].shape && !geometry::holds_lattice_point(*s.bodies[b].shape, s.dx))
       fail("bodies[" + std::to_string(b) + "].shape", s.bodies[b].shape->describe() + " holds no lattice point at dx = " +
                                                          std::to_string(s.dx) + " m (it is smaller than a particle)");
   // shaped bodies and walls fill the lattice (i + 1/2) dx; a box beside them lines up with it only if its
@@ -410,7 +409,7 @@ void validate_scene(const Scene& s) {
       on_lattice(s.walls.blocks[c].lo, "walls.blocks[" + std::to_string(c) + "].min");
   }
   for (std::size_t c = 0; c < s.walls.boundaries.size(); ++c)
-    if (geometry::fill_lattice(*s.walls.boundaries[c].shape, s.dx).empty())
+    if (!geometry::holds_lattice_point(*s.walls.boundaries[c].shape, s.dx))
       fail("walls.boundaries[" + std::to_string(c) + "].shape",
            s.walls.boundaries[c].shape->describe() + " holds no lattice point at dx = " + std::to_string(s.dx) +
                " m (it is thinner than a particle)");

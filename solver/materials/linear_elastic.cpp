@@ -22,10 +22,12 @@ const bool documented = register_section({"materials:solid:linear_elastic", "mat
                                           ElasticConstants::docs()});
 }  // namespace
 
-LinearElastic LinearElastic::parse(const JsonFields& f) {
+LinearElastic LinearElastic::parse(const JsonFields& f) { return with(ElasticConstants::parse(f)); }
+
+LinearElastic LinearElastic::with(const ElasticConstants& e) {
   LinearElastic m;
-  m.elastic = ElasticConstants::parse(f);
-  m.hooke_ = soil::DruckerPrager({m.elastic.young, m.elastic.poisson, 0, 0, 0});
+  m.elastic = e;
+  m.hooke_ = soil::DruckerPrager({e.young, e.poisson, 0, 0, 0});
   return m;
 }
 

@@ -12,6 +12,8 @@ struct LinearElastic : SolidModelDefaults {
   ElasticConstants elastic;
 
   static LinearElastic parse(const JsonFields& f);
+  // Hooke's law with these constants (also another model's elastic part: sim/gravity_loading.hpp).
+  static LinearElastic with(const ElasticConstants& e);
   double poisson_ratio() const { return elastic.poisson; }
   double wave_speed(double /*p*/, double density) const { return elastic.wave_speed(density); }
   SolidUpdate update(const Matrix3d& sigma, const Matrix3d& de, const Matrix3d& dw, const SolidState&,

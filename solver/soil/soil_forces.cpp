@@ -47,6 +47,8 @@ SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
     else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
     std::visit([&](const auto& model) {
       for (const char* f : model.state_fields) state_fields_.insert(f);
+      if constexpr (requires { model.elastic; }) hooke_.push_back(materials::LinearElastic::with(model.elastic));
+      else hooke_.emplace_back();
     }, m.model);
   }
 }
@@ -172,20 +174,11 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
         dw(a, b) = 0.5 * dt * (L[a][b] - L[b][a]);
       }
     const auto mat = P.material[i];
-    const materials::SolidUpdate r = std::visit(
-        [&](const auto& model) -> materials::SolidUpdate {
-          if constexpr (requires { model.elastic; }) {
-            if (elastic_only_) {  // Hooke with the model's own E, nu: sigma + dsigma = lambda tr(de) I + 2 G de
-              const double E = model.elastic.young, nu = model.elastic.poisson;
-              const double G = E / (2.0 * (1.0 + nu)), lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-              Eigen::Matrix3d s = soil::DruckerPrager::jaumann_rotate(sv.get(i), dw) + (2.0 * G) * de;
-              s.diagonal().array() += lambda * de.trace();
-              return {s, 0.0, true};
-            }
-          }
-          return model.update(sv.get(i), de, dw, states[mat], i);
-        },
-        scene_.soils[mat].model);
+    const materials::SolidUpdate r =
+        elastic_only_ && hooke_[mat]  // the elastic mode: Hooke with the model's own E, nu
+            ? hooke_[mat]->update(sv.get(i), de, dw, states[mat], i)
+            : std::visit([&](const auto& model) { return model.update(sv.get(i), de, dw, states[mat], i); },
+                         scene_.soils[mat].model);
     if (!r.converged) {
 #pragma omp critical
       if (unconverged < 0 || static_cast<long>(i) < unconverged) unconverged = static_cast<long>(i);

@@ -23,9 +23,11 @@
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "io/scene.hpp"
+#include <optional>
 #include <set>
 #include <string>
 
+#include "materials/linear_elastic.hpp"
 #include "materials/solid_model.hpp"
 #include "soil/soil_fields.hpp"
 
@@ -74,6 +76,8 @@ class SoilForces {
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
   mutable double max_wave_speed_ = 0;
   mutable bool elastic_only_ = false;
+  // per material: Hooke's law with its own constants, for the elastic mode (models with constant moduli)
+  std::vector<std::optional<materials::LinearElastic>> hooke_;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
   mutable std::vector<double> mass_, rho_, ghost_vx_, ghost_vy_, ghost_vz_;
 };

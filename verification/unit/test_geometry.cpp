@@ -18,6 +18,7 @@
 #include "geometry/stl_mesh.hpp"
 #include "io/json_fields.hpp"
 #include "io/scene.hpp"
+#include "test_scenes.hpp"
 
 using namespace geosph;
 using namespace geosph::geometry;
@@ -149,24 +150,10 @@ json shaped_scene() {
   })");
 }
 
-void expect_scene_error(const json& j, const std::string& field, const std::string& what) {
-  try {
-    const Scene s = parse_scene(j, "bad.json");
-    validate_scene(s);
-    ADD_FAILURE() << "no error for " << field;
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind("bad.json: field '", 0), 0u) << msg;
-    EXPECT_NE(msg.find(field), std::string::npos) << msg;
-    EXPECT_NE(msg.find(what), std::string::npos) << msg;
-  }
-}
-
 }  // namespace
 
 TEST(Geometry, ShapedSceneBuildsWallsWithNormals) {
   const Scene s = parse_scene(shaped_scene(), "ok.json");
-  validate_scene(s);
   std::vector<BodyFill> fills;
   const Particles P = build_particles(s, &fills);
   ASSERT_EQ(fills.size(), 1u);
@@ -189,28 +176,28 @@ TEST(Geometry, ShapedSceneBuildsWallsWithNormals) {
 TEST(Geometry, SceneShapeErrors) {
   json j = shaped_scene();
   j["bodies"][0]["shape"]["vertices"] = json::parse("[[0.2, 0], [0.4, 0.3], [0.4, 0], [0.2, 0.3]]");
-  expect_scene_error(j, "bodies[0].shape.vertices", "intersects itself");
+  test::expect_scene_error(j, "bodies[0].shape.vertices", "intersects itself");
   j = shaped_scene();
   j["bodies"][0]["shape"]["vertices"] = json::parse("[[0.2, 0], [0.4, 0]]");
-  expect_scene_error(j, "bodies[0].shape.vertices", "at least 3 vertices");
+  test::expect_scene_error(j, "bodies[0].shape.vertices", "at least 3 vertices");
   j = shaped_scene();
   j["bodies"][0]["shape"]["type"] = "sphere";
-  expect_scene_error(j, "bodies[0].shape.type", "must be one of {box, polygon, circle, union, difference}");
+  test::expect_scene_error(j, "bodies[0].shape.type", "must be one of {box, polygon, circle, union, difference}");
   j = shaped_scene();
   j["bodies"][0]["shape"] = json::parse(R"({"type": "circle", "centre": [0.3, 0.2], "radius": 0.005})");
-  expect_scene_error(j, "bodies[0].shape", "smaller than a particle");
+  test::expect_scene_error(j, "bodies[0].shape", "smaller than a particle");
   j = shaped_scene();
   j["bodies"][0]["shape"] = json::parse(R"({"type": "circle", "centre": [1.0, 0.2], "radius": 0.3})");
-  expect_scene_error(j, "bodies[0]", "outside the domain");
+  test::expect_scene_error(j, "bodies[0]", "outside the domain");
   j = shaped_scene();
   j["bodies"][0]["shape"]["vertices"] = json::parse("[[0.2, 0], [0.4, 0], [0.9, 0.4], [-0.2, 0.4]]");
-  expect_scene_error(j, "bodies[0]", "reaches into the solid of the wall walls.boundaries[0]");
+  test::expect_scene_error(j, "bodies[0]", "reaches into the solid of the wall walls.boundaries[0]");
   j = shaped_scene();
   j["walls"]["boundaries"][0]["shape"]["parts"].erase(1);
-  expect_scene_error(j, "walls.boundaries[0].shape.parts", "at least 2 shapes");
+  test::expect_scene_error(j, "walls.boundaries[0].shape.parts", "at least 2 shapes");
   j = shaped_scene();
   j["bodies"].push_back(json::parse(R"({"material": "water", "shape": "box", "min": [0.25, 0.41], "max": [0.35, 0.45]})"));
-  expect_scene_error(j, "bodies[1].min", "not a whole multiple of dx");
+  test::expect_scene_error(j, "bodies[1].min", "not a whole multiple of dx");
 }
 
 // A free-slip wall of any shape mirrors the soil's extrapolated stress across its tangent plane,

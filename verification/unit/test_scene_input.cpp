@@ -34,19 +34,8 @@ json valid_scene() {
   })");
 }
 
-// Expects parse_scene to throw an InputError whose message names the file and contains `field`
-// and `allowed`.
-void expect_error(const json& j, const std::string& field, const std::string& allowed) {
-  try {
-    parse_scene(j, "bad.json");
-    ADD_FAILURE() << "no error for field " << field;
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind("bad.json: field '", 0), 0u) << msg;
-    EXPECT_NE(msg.find(field), std::string::npos) << msg;
-    EXPECT_NE(msg.find(allowed), std::string::npos) << msg;
-  }
-}
+// parse_scene must throw an InputError naming the file, `field` and what is allowed.
+constexpr auto expect_error = test::expect_scene_error;
 
 }  // namespace
 

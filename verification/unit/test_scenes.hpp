@@ -1,8 +1,28 @@
 // Small scenes shared by the unit tests.
 #pragma once
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <string>
+
+#include "io/json_fields.hpp"
+#include "io/scene.hpp"
+
 namespace geosph::test {
+
+// parse_scene(j, "bad.json") must throw an InputError whose message names the file and contains
+// `field` and `what`.
+inline void expect_scene_error(const nlohmann::json& j, const std::string& field, const std::string& what) {
+  try {
+    parse_scene(j, "bad.json");
+    ADD_FAILURE() << "no error for field " << field;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind("bad.json: field '", 0), 0u) << msg;
+    EXPECT_NE(msg.find(field), std::string::npos) << msg;
+    EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  }
+}
 
 // A 0.2 m x 0.1 m Drucker-Prager column (geostatic start) in a dummy-wall box.
 inline nlohmann::json soil_column_scene(double dx = 0.01) {
