@@ -34,8 +34,10 @@ double fill_error(const Shape& s, double dx) {
   return filled / measure(s, dx) - 1.0;
 }
 
-// The Yamagami & Ueta (1988) slope, H = 5 m at 2:1, written as a user would: a 30 m x 10 m box less the
-// air above the ground surface (crest at (10, 10), toe at (20, 5)).
+// The slope profile of Yamagami & Ueta (1988), H = 5 m at 2:1 (Li et al. 2010, Table B1, in
+// ../shared/reference-data/slope_yamagami_ueta_1988_example1_geometry.csv, which rises to the right from
+// x = 5 to 15 m), here mirrored and shifted as a user might write it: a 30 m x 10 m box less the air above
+// the ground surface, crest at (10, 10), toe at (20, 5).
 ShapePtr slope() {
   return make_difference(2, {make_box(2, {0, 0, 0}, {30, 10, 0}),
                              make_polygon({{10, 10}, {20, 5}, {30, 5}, {30, 10.5}, {10, 10.5}}, {})});
@@ -88,7 +90,9 @@ TEST(Geometry, PolygonsWithoutAnInsideAreRejected) {
 TEST(Geometry, MeasuresOfPrimitivesAndCombinations) {
   const auto disc = make_ball(2, {0.5, 0.5, 0}, 0.3);
   EXPECT_NEAR(measure(*disc, 0.05), kPi * 0.09, 1e-12);
-  // a box less a disc wholly inside it: integrated by cells, against the closed form
+  // a box less a disc wholly inside it: integrated by cells, against the closed form. The finest cells
+  // (dx/64 in 2D, dx/8 in 3D) are decided by their centres; measured errors 3.5e-5 here and 8e-4 for the
+  // tunnel below, bounded at a few times that, far inside the 1% the fill is asked for
   const auto holed = make_difference(2, {make_box(2, {0, 0, 0}, {1, 1, 0}), disc});
   EXPECT_NEAR(measure(*holed, 0.05), 1.0 - kPi * 0.09, 2e-4);
   // a union of two overlapping boxes
