@@ -132,8 +132,18 @@ int cmd_run(const RunOptions& o) {
   auto last_wall_checkpoint = t0;
   int rc = 0;
   bool interrupted = false;
+  std::size_t events_logged = 0;
   try {
     sim.run([&](const Simulation& s) {
+      for (; events_logged < s.construction_log().size(); ++events_logged) {  // construction stages as they happen
+        const ConstructionEvent& e = s.construction_log()[events_logged];
+        std::fprintf(stderr, "\nconstruction at t = %.6g s: %s: %zu particles removed, %zu added", e.time, e.what.c_str(),
+                     e.removed, e.added);
+        if (e.settle_steps > 0)
+          std::fprintf(stderr, "; %s in %ld damped steps", e.settled ? "settled" : "NOT settled within gravity_loading.max_time",
+                       e.settle_steps);
+        std::fprintf(stderr, "\n");
+      }
       if (s.time() >= next_out * (1 - 1e-9)) {
         out.write(s.particles(), s.time(), s.steps());
         next_out += scene.output_interval;

@@ -25,6 +25,9 @@ const bool documented =
                        {"surcharge", FieldType::Object, "see bodies.surcharge", "none", "-",
                         "a vertical pressure on the soil body's top row"},
                        {"velocity", FieldType::Vector, "dimension numbers", "[0, 0(, 0)]", "m/s", "initial velocity"},
+                       number_doc("placed_at", Range::positive(), "0 (from the start)", "s",
+                                  "construction: the body appears at this time (a fill layer, an embankment lift), with "
+                                  "its initial state; it must not overlap what is there then"),
                        {"fixed", FieldType::Boolean, "true, false", "false", "-",
                         "solid bodies: held in place (velocity zero), e.g. a clamped root"},
                        {"structure", FieldType::Boolean, "true, false", "false", "-",
@@ -95,6 +98,10 @@ BodySpec parse_body(const JsonFields& b, const Scene& s) {
   }
   body.velocity = b.vector("velocity", d, {0, 0, 0});
   body.fixed = b.boolean("fixed", false);
+  if (b.has("placed_at")) {
+    body.placed_at = b.number("placed_at", Range::positive());
+    if (body.structure) b.fail("placed_at", "is for soil and fluid bodies; structures are there from the start");
+  }
   if (body.fixed && is_fluid) b.fail("fixed", "is only allowed for soil/solid bodies");
   if (body.structure) {
     body.interface_friction_angle = b.number("interface_friction_angle", Range{0, 90, false, true}, -1.0);

@@ -121,46 +121,52 @@ BodyFill add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::siz
   return {pts.size(), m.density * vol * static_cast<double>(pts.size()), m.density * body_measure(s, b)};
 }
 
+// Fluid body on the lattice: at rest (rho0) or in the Tait hydrostatic state below its highest point.
+BodyFill add_fluid_body(Particles& P, const Scene& s, const BodySpec& b) {
+  const double vol = std::pow(s.dx, s.dim);
+  const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
+  std::uint16_t mat = 0;
+  while (s.materials[mat].name != b.material) ++mat;
+  const TaitEos eos(s.materials[mat]);
+  // depth below the body's highest point, measured along gravity
+  double top = 1e300;
+  for (int c = 0; c < (1 << s.dim); ++c) {
+    double proj = 0;
+    for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
+    top = std::min(top, proj);
+  }
+  const auto pts = body_points(s, b);
+  double mass = 0;
+  for (const auto& pt : pts) {
+    const double x = pt[0], y = pt[1], z = pt[2];
+    double rho = eos.rho0;
+    if (b.initial == "hydrostatic" && gmag > 0) {
+      const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
+      rho = eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
+    }
+    P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
+    mass += rho * vol;
+    P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
+    P.p.back() = eos.pressure(rho);
+  }
+  return {pts.size(), mass, eos.rho0 * body_measure(s, b)};
+}
+
 }  // namespace
 
-Particles build_particles(const Scene& s, std::vector<BodyFill>* fills) {
+Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vector<Particles>* placed) {
   Particles P;
   P.dim = s.dim;
   const double vol = std::pow(s.dx, s.dim);
-  const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
 
   for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
     const BodySpec& b = s.bodies[bi];
-    if (std::any_of(s.soils.begin(), s.soils.end(), [&](const SoilMaterial& m) { return m.name == b.material; })) {
-      const BodyFill f = add_soil_body(P, s, b, bi);
-      if (fills) fills->push_back(f);
-      continue;
-    }
-    std::uint16_t mat = 0;
-    while (s.materials[mat].name != b.material) ++mat;
-    const TaitEos eos(s.materials[mat]);
-    // depth below the body's highest point, measured along gravity
-    double top = 1e300;
-    for (int c = 0; c < (1 << s.dim); ++c) {
-      double proj = 0;
-      for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
-      top = std::min(top, proj);
-    }
-    const auto pts = body_points(s, b);
-    double mass = 0;
-    for (const auto& pt : pts) {
-      const double x = pt[0], y = pt[1], z = pt[2];
-      double rho = eos.rho0;
-      if (b.initial == "hydrostatic" && gmag > 0) {
-        const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
-        rho = eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
-      }
-      P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
-      mass += rho * vol;
-      P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
-      P.p.back() = eos.pressure(rho);
-    }
-    if (fills) fills->push_back({pts.size(), mass, eos.rho0 * body_measure(s, b)});
+    Particles later;  // a body placed during the run (construction) is built apart
+    later.dim = s.dim;
+    Particles& into = b.placed_at > 0 ? later : P;
+    const BodyFill f = s.find_soil(b.material) ? add_soil_body(into, s, b, bi) : add_fluid_body(into, s, b);
+    if (fills) fills->push_back(f);
+    if (b.placed_at > 0 && placed) placed->push_back(std::move(later));
   }
 
   const int L = wall_layers(s);

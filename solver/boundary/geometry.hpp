@@ -16,8 +16,10 @@ struct BodyFill {
   double mass = 0, shape_mass = 0;
 };
 
-// With fills, one entry per body (scene order).
-Particles build_particles(const Scene& scene, std::vector<BodyFill>* fills = nullptr);
+// With fills, one entry per body (scene order). A body placed during the run (placed_at > 0) is not in
+// the returned set: it is built on its own into `placed` (one set per such body, scene order).
+Particles build_particles(const Scene& scene, std::vector<BodyFill>* fills = nullptr,
+                          std::vector<Particles>* placed = nullptr);
 int wall_layers(const Scene& scene);
 
 }  // namespace geosph

@@ -1,6 +1,7 @@
 #include "core/particles.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace geosph {
 
@@ -100,6 +101,65 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
   std::vector<Kind> tk; apply(kind, order, tk);
   std::vector<std::int64_t> ti; apply(id, order, ti);
   std::vector<std::uint16_t> tm; apply(material, order, tm);
+}
+
+namespace {
+template <class T>
+void compact(std::vector<T>& v, const std::vector<char>& remove) {
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!remove[i]) v[k++] = v[i];
+  v.resize(k);
+}
+template <class T>
+void extend(std::vector<T>& v, const std::vector<T>* from, std::size_t n) {
+  if (from) v.insert(v.end(), from->begin(), from->end());
+  else v.resize(v.size() + n, T{});
+}
+}  // namespace
+
+std::size_t Particles::remove(const std::vector<char>& remove) {
+  const std::size_t before = size();
+  for (auto* f : {&x, &y, &z, &vx, &vy, &vz, &ax, &ay, &az, &rho, &drho, &p, &m}) compact(*f, remove);
+  for (auto& [name, f] : extra_) compact(f, remove);
+  for (auto& [name, f] : ints_) compact(f, remove);
+  compact(kind, remove);
+  compact(id, remove);
+  compact(material, remove);
+  return before - size();
+}
+
+void Particles::append(const Particles& o) {
+  const std::size_t n = o.size();
+  std::int64_t next = 0;
+  for (const auto v : id) next = std::max(next, v + 1);
+  for (const auto& [name, f] : o.extra_)
+    if (!has_field(name)) add_field(name, o.owner(name));
+  for (const auto& [name, f] : o.ints_)
+    if (!has_int_field(name)) add_int_field(name, o.owner(name));
+  const std::vector<double>* core[] = {&o.x, &o.y, &o.z, &o.vx, &o.vy, &o.vz, &o.ax, &o.ay, &o.az, &o.rho, &o.drho, &o.p, &o.m};
+  std::vector<double>* mine[] = {&x, &y, &z, &vx, &vy, &vz, &ax, &ay, &az, &rho, &drho, &p, &m};
+  for (std::size_t c = 0; c < std::size(mine); ++c) extend(*mine[c], core[c], n);
+  for (auto& [name, f] : extra_) {
+    const auto it = o.extra_.find(name);
+    extend(f, it == o.extra_.end() ? nullptr : &it->second, n);
+  }
+  for (auto& [name, f] : ints_) {
+    const auto it = o.ints_.find(name);
+    extend(f, it == o.ints_.end() ? nullptr : &it->second, n);
+  }
+  extend(kind, &o.kind, n);
+  extend(material, &o.material, n);
+  for (std::size_t i = 0; i < n; ++i) id.push_back(next + static_cast<std::int64_t>(i));
+}
+
+void Particles::resize(std::size_t n) {
+  for (auto* f : {&x, &y, &z, &vx, &vy, &vz, &ax, &ay, &az, &rho, &drho, &p, &m}) f->resize(n);
+  for (auto& [name, f] : extra_) f.resize(n);
+  for (auto& [name, f] : ints_) f.resize(n);
+  kind.resize(n);
+  id.resize(n);
+  material.resize(n);
 }
 
 std::size_t Particles::count(Kind k) const { return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k)); }

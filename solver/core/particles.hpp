@@ -67,6 +67,14 @@ struct Particles {
 
   // Reorder every field so that particle k becomes old particle order[k].
   void permute(const std::vector<std::uint32_t>& order);
+  // Removes the particles whose `remove` flag is set (every field; order of the rest kept). Returns the count.
+  std::size_t remove(const std::vector<char>& remove);
+  // Appends the particles of `other` (same dimension): core fields, and every optional field of either
+  // set (zero where a set lacks it; fields only `other` has keep its owner). Ids continue after the
+  // largest id here, so they stay unique after removals.
+  void append(const Particles& other);
+  // Every field to n particles (new ones zero): a checkpoint of a run whose construction changed the count.
+  void resize(std::size_t n);
 
   std::size_t count(Kind k) const;
 

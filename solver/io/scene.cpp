@@ -6,6 +6,7 @@
 #include "boundary/body_input.hpp"
 #include "boundary/geometry.hpp"
 #include "boundary/wall_input.hpp"
+#include "sim/construction.hpp"
 #include "sim/gravity_loading.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "io/json_fields.hpp"
@@ -43,7 +44,9 @@ const bool documented_top = register_section(
       {"bodies", FieldType::Objects, "see bodies", "required", "-", "the bodies filled with particles"},
       {"walls", FieldType::Object, "see walls", "none", "-", "wall particles"},
       {"gravity_loading", FieldType::Object, "see gravity_loading", "none", "-",
-       "a gravity-loading stage before t = 0 (solids settle under their weight)"}}});
+       "a gravity-loading stage before t = 0 (solids settle under their weight)"},
+      {"excavations", FieldType::Objects, "see excavations", "none", "-",
+       "excavation stages: regions of soil and fluid removed at set times"}}});
 
 const bool documented_kernel = register_section(
     {"kernel", "kernel", "The SPH smoothing kernel and its smoothing length h.",
@@ -176,6 +179,8 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
   for (auto& b : top.array_of_objects("bodies")) s.bodies.push_back(parse_body(b, s));
   if (auto w = top.optional_object("walls")) s.walls = parse_walls(*w, d);
   if (auto g = top.optional_object("gravity_loading")) s.gravity_loading = parse_gravity_loading(*g);
+  if (top.has("excavations"))
+    for (auto& e : top.array_of_objects("excavations")) s.excavations.push_back(parse_excavation(e, d));
   top.reject_unknown();
   validate_scene(s);
   return s;
@@ -290,6 +295,35 @@ static void validate_two_phase(const Scene& s) {
   }
 }
 
+// Construction events happen within the run, excavations in time order and inside the domain; a
+// two-phase scene cannot have them yet (the seepage coupling's partner sets are built once).
+static void validate_construction(const Scene& s) {
+  auto fail = [&](const std::string& field, const std::string& what) {
+    throw InputError(s.file + ": field '" + field + "': " + what);
+  };
+  const char* axes = "xyz";
+  for (std::size_t k = 0; k < s.excavations.size(); ++k) {
+    const ExcavationSpec& e = s.excavations[k];
+    const std::string field = "excavations[" + std::to_string(k) + "]";
+    if (e.time > s.t_end) fail(field + ".time", "must not exceed time.end (" + std::to_string(s.t_end) + " s)");
+    if (k > 0 && e.time < s.excavations[k - 1].time) fail(field + ".time", "excavations must be listed in time order");
+    for (int a = 0; a < s.dim; ++a)
+      if (e.hi[a] < s.domain.lo[a] || e.lo[a] > s.domain.hi[a])
+        fail(field + ".shape", std::string("lies outside the domain along ") + axes[a]);
+    if (!geometry::holds_lattice_point(*e.shape, s.dx))
+      fail(field + ".shape", e.shape->describe() + " holds no lattice point at dx = " + std::to_string(s.dx) +
+                                 " m (it is smaller than a particle)");
+  }
+  for (std::size_t k = 0; k < s.bodies.size(); ++k)
+    if (s.bodies[k].placed_at > s.t_end)
+      fail("bodies[" + std::to_string(k) + "].placed_at", "must not exceed time.end (" + std::to_string(s.t_end) + " s)");
+  if (s.has_construction() && s.two_phase())
+    fail(s.excavations.empty() ? "bodies" : "excavations",
+         "construction stages are not yet available for saturated (two-phase) soil");
+  if (s.gravity_loading.after_construction && !s.has_construction())
+    fail("gravity_loading.after_construction", "is set but the scene has no excavation and no placed body");
+}
+
 // No two bodies may overlap (their particles would sit on top of each other) except a saturated soil
 // inside its pore water, and no body may reach into a wall block or the wall layers behind a closed
 // side of a container. Touching is allowed. A rigid structure (prescribed motion) may pass through
@@ -305,6 +339,7 @@ static void validate_overlaps(const Scene& s) {
     for (std::size_t k = i + 1; k < s.bodies.size(); ++k) {
       const BodySpec &a = s.bodies[i], &b = s.bodies[k];
       if (is_fluid(a) != is_fluid(b) && s.two_phase()) continue;  // pore water and its soil skeleton
+      if (a.placed_at > 0 || b.placed_at > 0) continue;  // checked when placed (sim/construction.hpp)
       if (bodies_overlap(s, a, b))
         fail("bodies[" + std::to_string(k) + "]", "overlaps bodies[" + std::to_string(i) +
                                                       "]: their particles would sit on top of each other; bodies "
@@ -445,6 +480,7 @@ void validate_scene(const Scene& s) {
         fail("bodies[" + std::to_string(b) + "].initial",
              "\"geostatic\" without gravity at t = 0 gives p' = 0, but the " + m.model_name() + " material \"" +
                  m.name + "\" needs p' > 0 at start (use \"isotropic\" with a pressure)");
+  validate_construction(s);
   validate_structures(s);
   validate_two_phase(s);
   validate_overlaps(s);

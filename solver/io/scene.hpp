@@ -36,6 +36,9 @@ struct BodySpec {
     double ramp = 0;                   // [s]
   } surcharge;
   std::array<double, 3> velocity{};
+  // Construction (sim/construction.hpp): > 0, the body appears at this time, e.g. a fill layer or an
+  // embankment lift; 0, it is there from the start.
+  double placed_at = 0;
   bool fixed = false;                 // held in place (velocity zero) but otherwise part of the material,
                                       // e.g. the clamped root of a plate (Gray, Monaghan & Swift 2001)
   // Structure bodies (structure/, coupling/soil_structure_contact.hpp): an SPH solid of their own
@@ -80,6 +83,13 @@ struct WallSpec {
   std::vector<BoundarySpec> boundaries;
 };
 
+// An excavation (sim/construction.hpp): at `time` the soil and fluid particles inside `shape` are removed.
+struct ExcavationSpec {
+  double time = 0;                    // [s], > 0
+  geometry::ShapePtr shape;
+  std::array<double, 3> lo{}, hi{};   // the shape's bounding box
+};
+
 // The gravity-loading stage before t = 0 (sim/gravity_loading.hpp).
 struct GravityLoadingSpec {
   bool active = false;
@@ -88,6 +98,10 @@ struct GravityLoadingSpec {
   double kinetic_energy_ratio = 1e-4;   // the stage ends when KE <= ratio x its peak KE
   double ramp = 0;                      // s: gravity grows smoothly over this time within the stage
   double max_time = 20;                 // s: not settled by then is an error naming the field
+  // After every construction event (an excavation, a placed body) the solids settle again under the
+  // same damping, with the scene's time held, as a staged geotechnical analysis solves each stage to
+  // equilibrium; their own model throughout.
+  bool after_construction = false;
 };
 
 // Resource limits of a run (not scene fields: the command line sets them, sim/resource_limits.hpp).
@@ -128,6 +142,13 @@ struct Scene {
   std::vector<BodySpec> bodies;
   WallSpec walls;
   GravityLoadingSpec gravity_loading;
+  std::vector<ExcavationSpec> excavations;  // in time order
+  bool has_construction() const {
+    if (!excavations.empty()) return true;
+    for (const auto& b : bodies)
+      if (b.placed_at > 0) return true;
+    return false;
+  }
   bool has_walls() const { return !walls.containers.empty() || !walls.blocks.empty() || !walls.boundaries.empty(); }
   // Some container's or boundary's slip differs from walls.slip: the wall particles carry
   // BodyFields::wall_free_slip.

@@ -92,7 +92,7 @@ nlohmann::json restore_checkpoint(const std::filesystem::path& file, Simulation&
   try {
     const Hdf5File f = Hdf5File::open(file);
     Particles& P = sim.particles();
-    const std::size_t n = P.size();
+    std::size_t n = P.size();
     const auto sized = [&](auto v, const std::string& name) {
       if (v.size() != n)
         refuse(file, "'" + name + "' holds " + std::to_string(v.size()) + " particles, the scene " + std::to_string(n));
@@ -118,6 +118,10 @@ nlohmann::json restore_checkpoint(const std::filesystem::path& file, Simulation&
     };
     same_fields("fields", names(P.extra_fields()));  // checked before anything of `sim` is overwritten
     same_fields("int_fields", names(P.int_fields()));
+    if (sim.scene().has_construction()) {  // excavations and placed bodies change the count during the run
+      n = f.read_uint8("particles/kind").size();
+      P.resize(n);
+    }
     for_each_core_array(P, [&](const char* name, std::vector<double>& v) {
       v = sized(f.read_doubles(std::string("particles/") + name), name);
     });

@@ -19,7 +19,10 @@ const bool documented = register_section(
       number_doc("kinetic_energy_ratio", Range::open(0, 1), "1e-4", "-",
                  "the stage ends when the solids' kinetic energy is at most this fraction of its peak"),
       number_doc("ramp", Range::non_negative(), "0", "s", "gravity grows smoothly over this time within the stage"),
-      number_doc("max_time", Range::positive(), "20", "s", "not settled by then stops the run with an error")}});
+      number_doc("max_time", Range::positive(), "20", "s", "not settled by then stops the run with an error"),
+      {"after_construction", FieldType::Boolean, "true, false", "false", "-",
+       "after every excavation or placed body the solids settle again (their own model, time held); not "
+       "settled in max_time is logged and the run goes on (the stage is failing)"}}});
 
 }  // namespace
 
@@ -32,6 +35,7 @@ GravityLoadingSpec parse_gravity_loading(const JsonFields& f) {
   g.kinetic_energy_ratio = f.number("kinetic_energy_ratio", Range::open(0, 1), 1e-4);
   g.ramp = f.number("ramp", Range::non_negative(), 0.0);
   g.max_time = f.number("max_time", Range::positive(), 20.0);
+  g.after_construction = f.boolean("after_construction", false);
   if (g.ramp >= g.max_time) f.fail("ramp", "must be shorter than max_time");
   f.reject_unknown();
   return g;

@@ -26,11 +26,21 @@ double pair_list_skin(const Scene& s) {
 Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
   validate_scene(scene_);
   check_resources(scene_);  // before anything is allocated
-  P_ = build_particles(scene_, &fills_);
+  std::vector<Particles> placed;
+  P_ = build_particles(scene_, &fills_, &placed);
+  for (std::size_t b = 0, k = 0; b < scene_.bodies.size(); ++b)
+    if (scene_.bodies[b].placed_at > 0) {
+      // the placed body's own fields exist from the start, so the particle layout (snapshots,
+      // checkpoints) keeps one set of fields through the run
+      for (const auto& [name, f] : placed[k].extra_fields()) P_.add_field(name, placed[k].owner(name));
+      for (const auto& [name, f] : placed[k].int_fields()) P_.add_int_field(name, placed[k].owner(name));
+      placements_.push_back({b, scene_.bodies[b].placed_at, std::move(placed[k++])});
+    }
+  excavated_.assign(scene_.excavations.size(), 0);
   n_fluid_ = P_.count(Kind::Fluid);
   n_soil_ = P_.count(Kind::Soil);
   n_structure_ = P_.count(Kind::Structure) + P_.count(Kind::RigidStructure);
-  if (n_fluid_ + n_soil_ + n_structure_ == 0)
+  if (n_fluid_ + n_soil_ + n_structure_ == 0 && placements_.empty())
     throw InputError(scene_.file + ": field 'bodies': the scene creates no particles (bodies smaller than dx?)");
   const bool dummy = P_.count(Kind::DummyWall) > 0;
   if (scene_.has_fluid()) {
@@ -56,7 +66,10 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     rigid_ = std::make_unique<RigidMotions>(scene_);
     rigid_->set_velocities(P_, 0.0);
   }
-  if (n_soil_ > 0 && n_structure_ > 0) {
+  const bool soil_later = std::any_of(placements_.begin(), placements_.end(), [](const Placement& p) {
+    return p.particles.count(Kind::Soil) > 0;
+  });
+  if ((n_soil_ > 0 || soil_later) && n_structure_ > 0) {
     contact_ = std::make_unique<SoilStructureContact>(scene_);
     contact_->allocate(P_);
   }
@@ -83,7 +96,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
 }
 
 std::array<double, 3> Simulation::gravity_at(double t) const {
-  const double ramp = loading_now_ ? scene_.gravity_loading.ramp : scene_.gravity_ramp;
+  const double ramp = loading_now_ ? loading_ramp_ : scene_.gravity_ramp;
   const double from = loading_now_ ? 0.0 : scene_.gravity_ramp_from;
   const double f = ramp > 0 && t < ramp
                        ? from + (1.0 - from) * smooth_start(t, ramp)
@@ -219,7 +232,9 @@ void Simulation::choose_time_step() {
   in.a_max = state_.a_max;
   in.nu_max = fluid_ ? fluid_->max_kinematic_viscosity() : 0.0;
   dt_ = stable_time_step(in, limits_);
-  if (!loading_now_ && t_ + dt_ > scene_.t_end) dt_ = std::max(scene_.t_end - t_, 1e-300);
+  if (loading_now_) return;
+  const double next = std::min(scene_.t_end, next_construction_time());
+  if (t_ + dt_ > next) dt_ = std::max(next - t_, 1e-300);
 }
 
 void Simulation::step() {
@@ -258,7 +273,95 @@ void Simulation::step() {
   run_hook(Hook::Forces);
   kick(half);
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
+  if (!loading_now_ && next_construction_time() <= t_ * (1 + 1e-12)) apply_construction();
   choose_time_step();
+}
+
+double Simulation::next_construction_time() const {
+  double next = 1e300;
+  for (std::size_t k = 0; k < excavated_.size(); ++k)
+    if (!excavated_[k]) next = std::min(next, scene_.excavations[k].time);
+  for (const auto& p : placements_)
+    if (!p.done) next = std::min(next, p.time);
+  return next;
+}
+
+void Simulation::apply_construction() {
+  const double due = t_ * (1 + 1e-12);
+  std::vector<ConstructionEvent> events;
+  for (std::size_t k = 0; k < excavated_.size(); ++k) {
+    if (excavated_[k] || scene_.excavations[k].time > due) continue;
+    excavated_[k] = 1;
+    ConstructionEvent e{"excavations[" + std::to_string(k) + "]", t_};
+    e.removed = P_.remove(inside_excavation(P_, *scene_.excavations[k].shape, scene_.dx));
+    events.push_back(e);
+  }
+  for (auto& p : placements_) {
+    if (p.done || p.time > due) continue;
+    p.done = true;
+    const std::string field = "bodies[" + std::to_string(p.body) + "]";
+    const long o = first_overlap(P_, p.particles, scene_.dx);
+    if (o >= 0)
+      throw InputError(scene_.file + ": field '" + field + ".placed_at': at t = " + std::to_string(t_) +
+                       " s the body would sit on particle " + std::to_string(P_.id[o]) + " at (" + std::to_string(P_.x[o]) +
+                       ", " + std::to_string(P_.y[o]) + ", " + std::to_string(P_.z[o]) +
+                       ") (closer than dx/2); place it where nothing is then (excavate first, or leave a gap)");
+    P_.append(p.particles);
+    ConstructionEvent e{field, t_};
+    e.added = p.particles.size();
+    events.push_back(e);
+  }
+  if (events.empty()) return;
+  n_fluid_ = P_.count(Kind::Fluid);
+  n_soil_ = P_.count(Kind::Soil);
+  n_structure_ = P_.count(Kind::Structure) + P_.count(Kind::RigidStructure);
+  if (soil_) soil_->allocate(P_);  // the wave speeds of the new particles
+  const long outside = cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
+  if (outside >= 0)
+    throw InputError(scene_.file + ": field '" + events.back().what + "': particle " + std::to_string(P_.id[outside]) +
+                     " lies outside the domain");
+  cells_.rebuild_pairs(P_);
+  density_dt_ = 0;  // the fluid density of this state is already corrected
+  run_hook(Hook::Forces);
+  state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
+  if (scene_.gravity_loading.after_construction) {
+    const double t_held = t_;
+    const long step_held = step_;
+    loading_now_ = true;
+    loading_ramp_ = 0;
+    t_ = 0;
+    for (std::size_t i = 0; i < P_.size(); ++i)  // prescribed motions pause while the stage settles
+      if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+    choose_time_step();
+    long steps = 0;
+    double peak = 0, ke = 0;
+    events.back().settled = settle(scene_.gravity_loading.max_time, steps, peak, ke);
+    events.back().settle_steps = steps;
+    loading_now_ = false;
+    for (std::size_t i = 0; i < P_.size(); ++i)
+      if (P_.kind[i] == Kind::Soil || P_.kind[i] == Kind::Structure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+    t_ = t_held;
+    step_ = step_held;
+    if (rigid_) rigid_->set_velocities(P_, t_);
+    density_dt_ = 0;
+    run_hook(Hook::Forces);
+    state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
+  }
+  construction_log_.insert(construction_log_.end(), events.begin(), events.end());
+}
+
+bool Simulation::settle(double max_time, long& steps, double& peak, double& ke) {
+  const double ratio = scene_.gravity_loading.kinetic_energy_ratio;
+  steps = 0;
+  peak = ke = 0;
+  while (true) {
+    step();
+    ++steps;
+    ke = solid_kinetic_energy(P_);
+    peak = std::max(peak, ke);
+    if (t_ >= loading_ramp_ && steps >= 20 && ke <= ratio * peak) return true;
+    if (t_ > max_time) return false;
+  }
 }
 
 Simulation::RunState Simulation::run_state() const {
@@ -282,6 +385,9 @@ void Simulation::restore_run_state(const RunState& s) {
   if (soil_) soil_->restore_max_wave_speed(get("soil_max_wave_speed", 1)[0]);
   if (rigid_) rigid_->restore_state(get("rigid_motion", 0));
   loading_.ran = scene_.gravity_loading.active;  // the checkpoint holds the settled state
+  const double done = t_ * (1 + 1e-12);  // and the construction events up to its time
+  for (std::size_t k = 0; k < excavated_.size(); ++k) excavated_[k] = scene_.excavations[k].time <= done;
+  for (auto& p : placements_) p.done = p.time <= done;
 }
 
 const GravityLoadingResult& Simulation::settle_under_gravity() {
@@ -294,24 +400,18 @@ const GravityLoadingResult& Simulation::settle_under_gravity() {
       if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
   };
   hold_rigid();
+  loading_ramp_ = g.ramp;
   run_hook(Hook::Forces);  // at the loading stage's gravity of t = 0
   choose_time_step();
   double peak = 0, ke = 0;
   long steps = 0;
-  while (true) {
-    step();
-    ++steps;
-    ke = solid_kinetic_energy(P_);
-    peak = std::max(peak, ke);
-    if (t_ >= g.ramp && steps >= 20 && ke <= g.kinetic_energy_ratio * peak) break;
-    if (t_ > g.max_time) {
-      loading_now_ = false;
-      throw InputError(scene_.file + ": field 'gravity_loading.max_time': the solids have not settled in " +
-                       std::to_string(g.max_time) + " s (" + std::to_string(steps) + " steps): kinetic energy " +
-                       std::to_string(ke) + " J" + (scene_.dim == 2 ? "/m" : "") + " is " +
-                       std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak, above kinetic_energy_ratio " +
-                       std::to_string(g.kinetic_energy_ratio) + "; raise max_time or damping, or the slope is failing");
-    }
+  if (!settle(g.max_time, steps, peak, ke)) {
+    loading_now_ = false;
+    throw InputError(scene_.file + ": field 'gravity_loading.max_time': the solids have not settled in " +
+                     std::to_string(g.max_time) + " s (" + std::to_string(steps) + " steps): kinetic energy " +
+                     std::to_string(ke) + " J" + (scene_.dim == 2 ? "/m" : "") + " is " +
+                     std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak, above kinetic_energy_ratio " +
+                     std::to_string(g.kinetic_energy_ratio) + "; raise max_time or damping, or the slope is failing");
   }
   loading_ = {true, steps, t_, peak, ke};
   loading_now_ = false;

@@ -23,6 +23,7 @@
 #include "core/time_step.hpp"
 #include "fluid/fluid_forces.hpp"
 #include "io/scene.hpp"
+#include "sim/construction.hpp"
 #include "sim/gravity_loading.hpp"
 #include "sim/stability.hpp"
 #include "sim/stages.hpp"
@@ -44,6 +45,8 @@ class Simulation {
   // Throws InputError naming gravity_loading.max_time if the solids do not settle.
   const GravityLoadingResult& settle_under_gravity();
   const GravityLoadingResult& gravity_loading() const { return loading_; }
+  // The construction events (sim/construction.hpp) done so far, in order.
+  const std::vector<ConstructionEvent>& construction_log() const { return construction_log_; }
   // Runs to scene.time.end (or `until`), calling `observe` after every step.
   void run(const std::function<void(const Simulation&)>& observe = {}, double until = -1);
 
@@ -89,6 +92,14 @@ class Simulation {
   // (Seepage::kick).
   void kick(double half);
   void apply_surcharge();
+  // The excavations and placed bodies due at the current time; then the neighbours, the forces and,
+  // with gravity_loading.after_construction, a damped settling at the held time.
+  void apply_construction();
+  // The next construction event's time after t (1e300 if none): the step is shortened to meet it.
+  double next_construction_time() const;
+  // Damped steps until the solids' kinetic energy falls to the stage's ratio of its peak, or to
+  // `max_time`; returns whether they settled.
+  bool settle(double max_time, long& steps, double& peak, double& ke);
 
   Scene scene_;
   Particles P_;
@@ -111,8 +122,18 @@ class Simulation {
   double density_dt_ = 0;  // the step the density stage last predicted the fluid density with (0 before the first)
   long step_ = 0;
   bool stop_ = false;
-  bool loading_now_ = false;  // inside the gravity-loading stage
+  bool loading_now_ = false;  // inside the gravity-loading stage (or a settling after construction)
+  double loading_ramp_ = 0;   // gravity's ramp within the stage (the first only)
   GravityLoadingResult loading_;
+  struct Placement {          // a body placed during the run, built at start
+    std::size_t body;
+    double time;
+    Particles particles;
+    bool done = false;
+  };
+  std::vector<Placement> placements_;
+  std::vector<char> excavated_;  // per scene excavation: done
+  std::vector<ConstructionEvent> construction_log_;
 };
 
 }  // namespace geosph
