@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "analysis/strength_reduction.hpp"
 #include "harness/catalogue.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/json_fields.hpp"
@@ -196,6 +197,45 @@ int cmd_run(const RunOptions& o) {
   return rc;
 }
 
+// Strength reduction (analysis/strength_reduction.hpp): the factor of safety, every trial and the failure
+// surface, written to OUT/strength_reduction.json (complete or not at all).
+int cmd_ssr(const std::string& scene_file, const std::string& out_dir, const StrengthReductionOptions& o, bool snapshots) {
+  if (!fs::exists(scene_file)) throw InputError(scene_file + ": cannot open scene file");
+  const nlohmann::json scene = read_json_file(scene_file);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::unique_ptr<Hdf5Output> trial_states;  // with --snapshots: each trial's end state, in the order run
+  if (snapshots) {
+    prepare_output_dir((fs::path(out_dir) / "trials").string(), true);
+    trial_states = std::make_unique<Hdf5Output>(fs::path(out_dir) / "trials", provenance(content_hash(scene.dump())));
+  }
+  const StrengthReductionResult r = strength_reduction(scene, scene_file, o, [&](const StrengthReductionTrial& t, const Particles& P) {
+    std::fprintf(stderr, "  F = %.4f: %s (%s), u95 %.3g m, %.3g s in %ld steps\n", t.factor, t.stable ? "stable" : "FAILED",
+                 t.reason.c_str(), t.displacement, t.time, t.steps);
+    if (trial_states) trial_states->write(P, t.factor, static_cast<long>(trial_states->snapshots()));
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nlohmann::json trials = nlohmann::json::array(), surface = nlohmann::json::array();
+  for (const auto& t : r.trials)
+    trials.push_back({{"factor", t.factor}, {"stable", t.stable}, {"reason", t.reason}, {"time_s", t.time},
+                      {"steps", t.steps}, {"u95_m", t.displacement}, {"kinetic_energy_ratio", t.kinetic_energy_ratio}});
+  nlohmann::json band = nlohmann::json::array();
+  for (const auto& p : r.failure_surface) surface.push_back({p[0], p[1]});
+  for (const auto& p : r.plastic_band) band.push_back({p[0], p[1]});
+  const nlohmann::json out = {{"scene", scene_file}, {"factor_of_safety", r.factor_of_safety}, {"f_stable", r.f_stable},
+                              {"f_failed", r.f_failed}, {"tolerance", o.tolerance},
+                              {"displacement_limit_m", o.displacement_limit}, {"trials", trials},
+                              {"failure_surface", surface}, {"plastic_band", band}, {"wall_s", wall},
+                              {"provenance", provenance(content_hash(scene.dump())).to_json()}};
+  fs::create_directories(out_dir);
+  const auto tmp = fs::path(out_dir) / "strength_reduction.json.tmp";
+  std::ofstream(tmp) << out.dump(2) << "\n";
+  fs::rename(tmp, fs::path(out_dir) / "strength_reduction.json");
+  std::fprintf(stderr, "factor of safety %.4f (stable at %.4f, failed at %.4f), %zu trials in %.1f s; %s\n",
+               r.factor_of_safety, r.f_stable, r.f_failed, r.trials.size(), wall,
+               (fs::path(out_dir) / "strength_reduction.json").c_str());
+  return 0;
+}
+
 int cmd_verify(const std::vector<std::string>& names, const std::string& level, const std::string& out_dir,
                bool progress) {
   verify::CaseContext ctx;
@@ -288,6 +328,20 @@ int main(int argc, char** argv) {
   ver->add_option("--out", vout, "directory for the result records")->required();
   ver->add_flag("--progress", vprogress, "show progress of each run");
 
+  auto* ssr = app.add_subcommand("ssr", "slope stability: factor of safety by shear strength reduction");
+  std::string ssr_scene, ssr_out;
+  StrengthReductionOptions so;
+  ssr->add_option("scene", ssr_scene, "scene file (JSON) with a gravity_loading stage (model \"material\")")->required();
+  ssr->add_option("--out", ssr_out, "directory for strength_reduction.json")->required();
+  ssr->add_option("--f-low", so.f_low, "lower end of the bracket (must be stable)")->capture_default_str();
+  ssr->add_option("--f-high", so.f_high, "upper end of the bracket (must fail)")->capture_default_str();
+  ssr->add_option("--tolerance", so.tolerance, "bisection stops at this width of the bracket")->capture_default_str();
+  bool ssr_snapshots = false;
+  ssr->add_flag("--snapshots", ssr_snapshots, "write each trial's end state under OUT/trials/ (HDF5; its 'time' is the trial's F)");
+  ssr->add_option("--displacement-limit", so.displacement_limit,
+                  "m: a trial whose u95 (displacement passed by 5% of the soil) exceeds this has failed")
+      ->capture_default_str();
+
   auto* info = app.add_subcommand("info", "version, threads and the verification catalogue");
 
   auto* ref = app.add_subcommand("scene-reference", "the scene format, from the modules' own declarations");
@@ -303,6 +357,7 @@ int main(int argc, char** argv) {
   try {
     if (*run) return cmd_run(ro);
     if (*ver) return cmd_verify(cases, level, vout, vprogress);
+    if (*ssr) return cmd_ssr(ssr_scene, ssr_out, so, ssr_snapshots);
     if (*ref) {
       if (ref_format == "markdown") std::printf("%s", scene_reference_markdown().c_str());
       else std::printf("%s\n", scene_reference_schema().dump(2).c_str());

@@ -408,8 +408,13 @@ void validate_scene(const Scene& s) {
   for (std::size_t c = 0; c < s.walls.containers.size(); ++c)
     for (int a = 0; a < s.dim; ++a) {
       if (s.domain.periodic[a]) continue;
-      if (s.walls.containers[c].lo[a] - wall_thick < s.domain.lo[a] - 1e-12 ||
-          s.walls.containers[c].hi[a] + wall_thick > s.domain.hi[a] + 1e-12)
+      const auto& open = s.walls.containers[c].open;  // an open side has no wall layers
+      static const char* lo_name[3] = {"left", "bottom", "back"};
+      static const char* hi_name[3] = {"right", "top", "front"};
+      const double lo_thick = std::find(open.begin(), open.end(), lo_name[a]) != open.end() ? 0.0 : wall_thick;
+      const double hi_thick = std::find(open.begin(), open.end(), hi_name[a]) != open.end() ? 0.0 : wall_thick;
+      if (s.walls.containers[c].lo[a] - lo_thick < s.domain.lo[a] - 1e-12 ||
+          s.walls.containers[c].hi[a] + hi_thick > s.domain.hi[a] + 1e-12)
         fail("walls.containers[" + std::to_string(c) + "]",
              std::string("its wall layers (") + std::to_string(wall_thick) + " m thick) extend outside the domain along " +
                  axes[a]);

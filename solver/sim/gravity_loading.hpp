@@ -22,6 +22,7 @@ GravityLoadingSpec parse_gravity_loading(const JsonFields& f);
 // What the stage did, for the run's log and records.
 struct GravityLoadingResult {
   bool ran = false;
+  bool settled = true;  // false: max_time passed, or the monitor abandoned the stage (try_settle_under_gravity)
   long steps = 0;
   double time = 0, peak_kinetic_energy = 0, final_kinetic_energy = 0;
 };

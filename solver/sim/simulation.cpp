@@ -350,7 +350,8 @@ void Simulation::apply_construction() {
   construction_log_.insert(construction_log_.end(), events.begin(), events.end());
 }
 
-bool Simulation::settle(double max_time, long& steps, double& peak, double& ke) {
+bool Simulation::settle(double max_time, long& steps, double& peak, double& ke,
+                        const std::function<bool(const Simulation&)>& abandon) {
   const double ratio = scene_.gravity_loading.kinetic_energy_ratio;
   steps = 0;
   peak = ke = 0;
@@ -360,7 +361,7 @@ bool Simulation::settle(double max_time, long& steps, double& peak, double& ke) 
     ke = solid_kinetic_energy(P_);
     peak = std::max(peak, ke);
     if (t_ >= loading_ramp_ && steps >= 20 && ke <= ratio * peak) return true;
-    if (t_ > max_time) return false;
+    if (t_ > max_time || (abandon && abandon(*this))) return false;
   }
 }
 
@@ -390,19 +391,33 @@ void Simulation::restore_run_state(const RunState& s) {
   for (auto& p : placements_) p.done = p.time <= done;
 }
 
-const GravityLoadingResult& Simulation::settle_under_gravity() {
+bool Simulation::begin_loading() {
   const GravityLoadingSpec& g = scene_.gravity_loading;
-  if (!g.active || loading_.ran) return loading_;
+  if (!g.active || loading_.ran) return false;
   loading_now_ = true;
   if (soil_) soil_->set_elastic_only(g.model == "elastic");
-  auto hold_rigid = [this] {
-    for (std::size_t i = 0; i < P_.size(); ++i)
-      if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
-  };
-  hold_rigid();
+  for (std::size_t i = 0; i < P_.size(); ++i)  // prescribed motions wait for the run proper
+    if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
   loading_ramp_ = g.ramp;
   run_hook(Hook::Forces);  // at the loading stage's gravity of t = 0
   choose_time_step();
+  return true;
+}
+
+const GravityLoadingResult& Simulation::try_settle_under_gravity(const std::function<bool(const Simulation&)>& abandon) {
+  if (!begin_loading()) return loading_;
+  double peak = 0, ke = 0;
+  long steps = 0;
+  const bool settled = settle(scene_.gravity_loading.max_time, steps, peak, ke, abandon);
+  loading_ = {true, settled, steps, t_, peak, ke};
+  loading_now_ = false;
+  if (soil_) soil_->set_elastic_only(false);
+  return loading_;
+}
+
+const GravityLoadingResult& Simulation::settle_under_gravity() {
+  const GravityLoadingSpec& g = scene_.gravity_loading;
+  if (!begin_loading()) return loading_;
   double peak = 0, ke = 0;
   long steps = 0;
   if (!settle(g.max_time, steps, peak, ke)) {
@@ -413,7 +428,7 @@ const GravityLoadingResult& Simulation::settle_under_gravity() {
                      std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak, above kinetic_energy_ratio " +
                      std::to_string(g.kinetic_energy_ratio) + "; raise max_time or damping, or the slope is failing");
   }
-  loading_ = {true, steps, t_, peak, ke};
+  loading_ = {true, true, steps, t_, peak, ke};
   loading_now_ = false;
   if (soil_) soil_->set_elastic_only(false);
   for (std::size_t i = 0; i < P_.size(); ++i)

@@ -44,6 +44,10 @@ class Simulation {
   // the solids settle under their weight before t = 0. run() calls it first; a restart skips it.
   // Throws InputError naming gravity_loading.max_time if the solids do not settle.
   const GravityLoadingResult& settle_under_gravity();
+  // The same stage for analyses that run many trial stages (analysis/strength_reduction.hpp): `abandon`
+  // is asked after every step (true: stop the stage there), and passing max_time is not an error; the
+  // result says whether the solids settled. The state is left as the stage ended (velocities kept).
+  const GravityLoadingResult& try_settle_under_gravity(const std::function<bool(const Simulation&)>& abandon);
   const GravityLoadingResult& gravity_loading() const { return loading_; }
   // The construction events (sim/construction.hpp) done so far, in order.
   const std::vector<ConstructionEvent>& construction_log() const { return construction_log_; }
@@ -99,7 +103,9 @@ class Simulation {
   double next_construction_time() const;
   // Damped steps until the solids' kinetic energy falls to the stage's ratio of its peak, or to
   // `max_time`; returns whether they settled.
-  bool settle(double max_time, long& steps, double& peak, double& ke);
+  bool settle(double max_time, long& steps, double& peak, double& ke,
+              const std::function<bool(const Simulation&)>& abandon = {});
+  bool begin_loading();  // false: the scene has no stage, or it ran
 
   Scene scene_;
   Particles P_;

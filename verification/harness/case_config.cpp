@@ -22,7 +22,7 @@ CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
   JsonFields f(j, file, "");
   c.title = f.text("title");
   auto ref = f.object("reference");
-  ref.choice("kind", {"analytical", "experimental", "dem", "none"});  // none: an unscored example
+  ref.choice("kind", {"analytical", "experimental", "dem", "limit_equilibrium", "none"});  // none: an unscored example
   ref.text("source");
   c.reference = j.at("reference");
   auto levels = f.object("levels");
