@@ -172,15 +172,13 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
   const int L = wall_layers(s);
   const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
   const double rho0 = s.has_fluid() ? s.materials.front().density : s.soils.front().density;
-  static const char* lo_side[3] = {"left", "bottom", "back"};
-  static const char* hi_side[3] = {"right", "top", "front"};
   for (const auto& c : s.walls.containers) {
     auto is_open = [&](const char* side) { return std::find(c.open.begin(), c.open.end(), side) != c.open.end(); };
     std::array<double, 3> lo = c.lo, hi = c.hi;
     for (int a = 0; a < s.dim; ++a) {
       if (s.domain.periodic[a]) continue;
-      if (!is_open(lo_side[a])) lo[a] -= L * s.dx;
-      if (!is_open(hi_side[a])) hi[a] += L * s.dx;
+      if (!is_open(container_side(s.dim, a, false))) lo[a] -= L * s.dx;
+      if (!is_open(container_side(s.dim, a, true))) hi[a] += L * s.dx;
     }
     // Repulsive walls (Monaghan 1994) are a single line of particles on the wall surface.
     const int layers = wall == Kind::RepulsiveWall ? 1 : L;

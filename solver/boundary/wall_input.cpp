@@ -46,7 +46,8 @@ const bool documented_containers = register_section(
     {"walls.containers", "walls.containers[k]", "A box whose faces (but the open ones) are walls; min/max are the inner faces.",
      {{"min", FieldType::Vector, "dimension numbers", "required", "m", "inner lower corner"},
       {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "inner upper corner"},
-      {"open", FieldType::Texts, "from {left, right, bottom, top, front, back}", "[]", "-", "sides without a wall"},
+      {"open", FieldType::Texts, "from {left, right, bottom, top, front, back}", "[]", "-",
+       "sides without a wall: left/right along x; 2D: bottom/top along y; 3D: front/back along y, bottom/top along z"},
       choice_doc("slip", {"no_slip", "free_slip"}, "walls.slip", "this container's wall condition")}});
 
 const bool documented_blocks = register_section(
@@ -72,6 +73,10 @@ WallSpec parse_walls(const JsonFields& w, int dim) {
       c.section("walls.containers");
       ContainerSpec cs = parse_box(c, dim);
       cs.open = c.texts("open", kSides);
+      for (const auto& side : cs.open)
+        if (dim == 2 && (side == "front" || side == "back"))
+          c.fail("open", "\"" + side + "\" is a side of a 3D container (along y); a 2D container has left, right, "
+                         "bottom and top");
       cs.slip = c.choice("slip", {"no_slip", "free_slip"}, walls.slip);
       c.reject_unknown();
       walls.containers.push_back(cs);

@@ -345,8 +345,6 @@ static void validate_overlaps(const Scene& s) {
                                                       "]: their particles would sit on top of each other; bodies "
                                                       "may touch but not intersect");
     }
-  static const char* lo_side[3] = {"left", "bottom", "back"};
-  static const char* hi_side[3] = {"right", "top", "front"};
   // boundary/geometry.cpp: dummy walls are wall_layers deep, repulsive walls one line on the surface
   const double L = (s.walls.type == "repulsive" ? 1 : wall_layers(s)) * s.dx;
   for (std::size_t k = 0; k < s.bodies.size(); ++k) {
@@ -368,13 +366,17 @@ static void validate_overlaps(const Scene& s) {
       for (int a = 0; a < s.dim; ++a) {
         if (s.domain.periodic[a]) continue;
         for (int side = 0; side < 2; ++side) {
-          const char* name = side == 0 ? lo_side[a] : hi_side[a];
+          const char* name = container_side(s.dim, a, side == 1);
           if (std::find(w.open.begin(), w.open.end(), name) != w.open.end()) continue;
           auto lo = w.lo, hi = w.hi;  // the wall's layers behind this side
           for (int o = 0; o < s.dim; ++o)
             if (o != a) { lo[o] -= L; hi[o] += L; }
           if (side == 0) { hi[a] = w.lo[a]; lo[a] = w.lo[a] - L; } else { lo[a] = w.hi[a]; hi[a] = w.hi[a] + L; }
-          if (overlap_volume(s.dim, b.lo, b.hi, lo, hi) > tiny)
+          BodySpec layers;
+          layers.lo = lo;
+          layers.hi = hi;
+          // a shaped body only where its lattice points are (its bounding box may reach further)
+          if (b.shape ? bodies_overlap(s, b, layers) : overlap_volume(s.dim, b.lo, b.hi, lo, hi) > tiny)
             fail(field, std::string("reaches into the wall layers of walls.containers[") + std::to_string(c) + "] (its " +
                             name + " side, " + std::to_string(L) + " m thick)");
         }
@@ -409,10 +411,8 @@ void validate_scene(const Scene& s) {
     for (int a = 0; a < s.dim; ++a) {
       if (s.domain.periodic[a]) continue;
       const auto& open = s.walls.containers[c].open;  // an open side has no wall layers
-      static const char* lo_name[3] = {"left", "bottom", "back"};
-      static const char* hi_name[3] = {"right", "top", "front"};
-      const double lo_thick = std::find(open.begin(), open.end(), lo_name[a]) != open.end() ? 0.0 : wall_thick;
-      const double hi_thick = std::find(open.begin(), open.end(), hi_name[a]) != open.end() ? 0.0 : wall_thick;
+      const double lo_thick = std::find(open.begin(), open.end(), container_side(s.dim, a, false)) != open.end() ? 0.0 : wall_thick;
+      const double hi_thick = std::find(open.begin(), open.end(), container_side(s.dim, a, true)) != open.end() ? 0.0 : wall_thick;
       if (s.walls.containers[c].lo[a] - lo_thick < s.domain.lo[a] - 1e-12 ||
           s.walls.containers[c].hi[a] + hi_thick > s.domain.hi[a] + 1e-12)
         fail("walls.containers[" + std::to_string(c) + "]",

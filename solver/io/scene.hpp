@@ -57,6 +57,17 @@ struct BodySpec {
   bool is_rigid_structure() const { return structure && motion.active; }
 };
 
+// The name of a container's side (ContainerSpec::open): left/right along x; in 2D bottom/top along y;
+// in 3D front/back along y (min/max) and bottom/top along z, so that "top" is always the side gravity
+// points away from in the catalogue's convention (-y in 2D, -z in 3D).
+inline const char* container_side(int dim, int axis, bool upper) {
+  static const char* lo2[2] = {"left", "bottom"};
+  static const char* hi2[2] = {"right", "top"};
+  static const char* lo3[3] = {"left", "front", "bottom"};
+  static const char* hi3[3] = {"right", "back", "top"};
+  return dim == 2 ? (upper ? hi2[axis] : lo2[axis]) : (upper ? hi3[axis] : lo3[axis]);
+}
+
 struct ContainerSpec {
   std::array<double, 3> lo{}, hi{};   // the inner (fluid-side) faces of the walls
   std::vector<std::string> open;      // sides without a wall: left right bottom top front back

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/json_fields.hpp"
+#include "boundary/geometry.hpp"
 #include "io/scene.hpp"
 #include "sim/simulation.hpp"
 #include "test_scenes.hpp"
@@ -395,4 +396,29 @@ TEST(SceneInput, CommandLineRefusesAnEarlierRunsOutputUnlessOverwrite) {
   EXPECT_FALSE(fs::exists(out / "particles_000009.h5")) << "the earlier run's snapshot was kept next to the new ones";
   EXPECT_TRUE(fs::exists(out / "particles_000001.h5"));
   EXPECT_TRUE(fs::exists(out / "notes.txt")) << "--overwrite removed a file GeoSPH did not write";
+}
+
+// A container's sides by axis: in 3D "top" and "bottom" are along z (gravity -z), "front" and "back"
+// along y; an open side has no wall layers and needs no room in the domain; 2D containers have no
+// front or back.
+TEST(SceneInput, ContainerSidesByAxis) {
+  auto j = nlohmann::json::parse(R"({
+    "name": "box3", "dimension": 3, "dx": 0.1,
+    "domain": {"min": [-0.5, -0.5, -0.5], "max": [1.5, 1.5, 1.05]},
+    "gravity": [0, 0, -9.81], "time": {"end": 0.001},
+    "materials": {"water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
+    "bodies": [{"material": "water", "shape": "box", "min": [0, 0, 0], "max": [1, 1, 0.5]}],
+    "walls": {"type": "dummy", "containers": [{"min": [0, 0, 0], "max": [1, 1, 1], "open": ["top"]}]}
+  })");
+  const auto P = geosph::build_particles(geosph::parse_scene(j, "box3.json"));
+  double z_max = -1, y_max = -1;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (geosph::is_wall(P.kind[i])) { z_max = std::max(z_max, P.z[i]); y_max = std::max(y_max, P.y[i]); }
+  EXPECT_LT(z_max, 1.0);  // no lid: the open top is the z side (its layers would not fit the domain)
+  EXPECT_GT(y_max, 1.0);  // the back wall (y max) is closed
+  j["walls"]["containers"][0]["open"] = {"back"};
+  geosph::test::expect_scene_error(j, "'walls.containers[0]'", "extend outside the domain along z");
+  auto j2 = geosph::test::soil_column_scene();
+  j2["walls"]["containers"][0]["open"] = {"top", "front"};
+  geosph::test::expect_scene_error(j2, "'walls.containers[0].open'", "\"front\" is a side of a 3D container");
 }
