@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace geosph::verify {
 
@@ -26,6 +27,15 @@ double runout_front(const Particles& P, double floor_y, double dx) {
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::Soil && P.y[i] < floor_y + 2 * dx) xmax = std::max(xmax, P.x[i]);
   return xmax + 0.5 * dx;
+}
+
+double scaling_law(const nlohmann::json& entries, double a) {
+  for (const auto& e : entries) {
+    const double lo = e.at("a_min").get<double>();
+    const double hi = e.at("a_max").is_null() ? std::numeric_limits<double>::infinity() : e.at("a_max").get<double>();
+    if (a >= lo && a < hi) return e.at("coefficient").get<double>() * std::pow(a, e.at("exponent").get<double>());
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 double max_soil_speed(const Particles& P) {

@@ -21,14 +21,8 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double law(const nlohmann::json& entries, double a) {
-  for (const auto& e : entries) {
-    const double lo = e.at("a_min").get<double>();
-    const double hi = e.at("a_max").is_null() ? std::numeric_limits<double>::infinity() : e.at("a_max").get<double>();
-    if (a >= lo && a < hi) return e.at("coefficient").get<double>() * std::pow(a, e.at("exponent").get<double>());
-  }
-  return kNaN;
-}
+// the reference's piecewise power laws (harness/deposit.hpp)
+double law(const nlohmann::json& entries, double a) { return scaling_law(entries, a); }
 
 // Radius of the deposit's edge on the floor (soil within 2 dx of it), at the particle's edge.
 double radial_front(const Particles& P, double dx) {

@@ -25,15 +25,8 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A piecewise power law from the reference JSON: coefficient * a^exponent on [a_min, a_max).
-double law(const nlohmann::json& entries, double a) {
-  for (const auto& e : entries) {
-    const double lo = e.at("a_min").get<double>();
-    const double hi = e.at("a_max").is_null() ? std::numeric_limits<double>::infinity() : e.at("a_max").get<double>();
-    if (a >= lo && a < hi) return e.at("coefficient").get<double>() * std::pow(a, e.at("exponent").get<double>());
-  }
-  return kNaN;  // in a transition band without a fitted law
-}
+// the reference's piecewise power laws (harness/deposit.hpp)
+double law(const nlohmann::json& entries, double a) { return scaling_law(entries, a); }
 
 // Least-squares exponent and prefactor of y = c a^p over the points with a in [lo, hi).
 struct PowerFit {
