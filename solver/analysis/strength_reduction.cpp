@@ -99,6 +99,7 @@ StrengthReductionResult strength_reduction(const nlohmann::json& scene, const st
     throw InputError("--f-low/--f-high: need 0 < f_low < f_high, got " + std::to_string(o.f_low) + ", " + std::to_string(o.f_high));
   if (!(o.tolerance > 0)) throw InputError("--tolerance: must be > 0");
   if (!(o.displacement_limit > 0)) throw InputError("--displacement-limit: must be > 0 m");
+  double dx = 0;
   {
     const Scene s = parse_scene(scene, file);  // the scene itself must be valid
     if (!s.gravity_loading.active)
@@ -110,6 +111,7 @@ StrengthReductionResult strength_reduction(const nlohmann::json& scene, const st
     bool any = false;
     for (const auto& [name, m] : scene.at("materials").items()) any = any || (m.is_object() && reducible(m));
     if (!any) throw InputError(file + ": field 'materials': no drucker_prager or mohr_coulomb material to reduce");
+    dx = s.dx;
   }
   StrengthReductionResult res;
   Particles state;
@@ -141,7 +143,6 @@ StrengthReductionResult strength_reduction(const nlohmann::json& scene, const st
   res.f_stable = lo;
   res.f_failed = hi;
   res.factor_of_safety = 0.5 * (lo + hi);
-  const double dx = parse_scene(scene, file).dx;
   res.failure_surface = slip_surface(failed, dx);
   res.plastic_band = plastic_band(failed, dx);
   res.failed_state = std::move(failed);

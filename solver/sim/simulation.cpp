@@ -330,16 +330,14 @@ void Simulation::apply_construction() {
     loading_now_ = true;
     loading_ramp_ = 0;
     t_ = 0;
-    for (std::size_t i = 0; i < P_.size(); ++i)  // prescribed motions pause while the stage settles
-      if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+    hold_rigid_structures();  // prescribed motions pause while the stage settles
     choose_time_step();
     long steps = 0;
     double peak = 0, ke = 0;
     events.back().settled = settle(scene_.gravity_loading.max_time, steps, peak, ke);
     events.back().settle_steps = steps;
     loading_now_ = false;
-    for (std::size_t i = 0; i < P_.size(); ++i)
-      if (P_.kind[i] == Kind::Soil || P_.kind[i] == Kind::Structure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+    stop_solids();
     t_ = t_held;
     step_ = step_held;
     if (rigid_) rigid_->set_velocities(P_, t_);
@@ -348,6 +346,16 @@ void Simulation::apply_construction() {
     state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   }
   construction_log_.insert(construction_log_.end(), events.begin(), events.end());
+}
+
+void Simulation::hold_rigid_structures() {
+  for (std::size_t i = 0; i < P_.size(); ++i)
+    if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+}
+
+void Simulation::stop_solids() {
+  for (std::size_t i = 0; i < P_.size(); ++i)
+    if (P_.kind[i] == Kind::Soil || P_.kind[i] == Kind::Structure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
 }
 
 bool Simulation::settle(double max_time, long& steps, double& peak, double& ke,
@@ -396,8 +404,7 @@ bool Simulation::begin_loading() {
   if (!g.active || loading_.ran) return false;
   loading_now_ = true;
   if (soil_) soil_->set_elastic_only(g.model == "elastic");
-  for (std::size_t i = 0; i < P_.size(); ++i)  // prescribed motions wait for the run proper
-    if (P_.kind[i] == Kind::RigidStructure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+  hold_rigid_structures();  // prescribed motions wait for the run proper
   loading_ramp_ = g.ramp;
   run_hook(Hook::Forces);  // at the loading stage's gravity of t = 0
   choose_time_step();
@@ -431,8 +438,7 @@ const GravityLoadingResult& Simulation::settle_under_gravity() {
   loading_ = {true, true, steps, t_, peak, ke};
   loading_now_ = false;
   if (soil_) soil_->set_elastic_only(false);
-  for (std::size_t i = 0; i < P_.size(); ++i)
-    if (P_.kind[i] == Kind::Soil || P_.kind[i] == Kind::Structure) P_.vx[i] = P_.vy[i] = P_.vz[i] = 0;
+  stop_solids();
   t_ = 0;
   step_ = 0;
   if (rigid_) rigid_->set_velocities(P_, 0.0);

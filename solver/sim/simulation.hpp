@@ -106,6 +106,8 @@ class Simulation {
   bool settle(double max_time, long& steps, double& peak, double& ke,
               const std::function<bool(const Simulation&)>& abandon = {});
   bool begin_loading();  // false: the scene has no stage, or it ran
+  void hold_rigid_structures();  // zero velocity on rigid structures (their motion waits for a stage)
+  void stop_solids();            // zero velocity on soil and deformable structures (a stage ends at rest)
 
   Scene scene_;
   Particles P_;

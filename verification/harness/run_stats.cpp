@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "harness/metrics.hpp"
@@ -90,14 +91,22 @@ nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points) 
 
 nlohmann::json field_snapshot(const Simulation& sim, const std::string& field, const std::string& units,
                               std::size_t max_points) {
-  const auto& P = sim.particles();
-  const std::size_t stride = std::max<std::size_t>(1, sim.moving_count() / max_points + 1);
+  return field_snapshot(sim.particles(), field, units, max_points);
+}
+
+nlohmann::json field_snapshot(const Particles& P, const std::string& field, const std::string& units,
+                              std::size_t max_points) {
+  std::size_t moving = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) moving += is_moving(P.kind[i]) ? 1 : 0;
+  const std::size_t stride = std::max<std::size_t>(1, moving / max_points + 1);
+  const std::vector<double>* extra = field == "pressure" || field == "speed" ? nullptr : &P.extra_fields().at(field);
   nlohmann::json x = nlohmann::json::array(), y = nlohmann::json::array(), v = nlohmann::json::array();
   std::size_t k = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!is_moving(P.kind[i]) || (k++ % stride) != 0) continue;
     x.push_back(P.x[i]); y.push_back(P.y[i]);
-    v.push_back(field == "pressure" ? P.p[i] : P.extra_fields().at(field)[i]);
+    v.push_back(extra ? (*extra)[i]
+                      : field == "pressure" ? P.p[i] : std::sqrt(P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]));
   }
   return {{"x", x}, {"y", y}, {"values", v}, {"field", field}, {"units", units}};
 }

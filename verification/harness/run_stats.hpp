@@ -27,8 +27,11 @@ std::vector<Record> run_each_variant(
 
 // Final particle snapshot (fluid only, at most max_points) coloured by pressure.
 nlohmann::json pressure_snapshot(const Simulation& sim, std::size_t max_points = 6000);
-// Snapshot of any moving-particle field ("pressure" or an optional field such as "plastic_strain").
+// Snapshot of any moving-particle field ("pressure", "speed" or an optional field such as
+// "plastic_strain"), of a simulation or of a particle set kept from one.
 nlohmann::json field_snapshot(const Simulation& sim, const std::string& field, const std::string& units,
+                              std::size_t max_points = 6000);
+nlohmann::json field_snapshot(const Particles& P, const std::string& field, const std::string& units,
                               std::size_t max_points = 6000);
 
 }  // namespace geosph::verify

@@ -136,15 +136,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   for (const auto& p : r.plastic_band) { band.x.push_back(p[0]); band.y.push_back(p[1]); }
   rec.series = {Series{"critical surface (Li et al. 2010, Spencer)", "analytical", "slip", "x [m]", "y [m]", sx, sy},
                 Series{"ground surface", "analytical", "slip", "x [m]", "y [m]", gx, gy}, ours, band};
-  nlohmann::json x = nlohmann::json::array(), y = nlohmann::json::array(), v = nlohmann::json::array();
-  const Particles& P = r.failed_state;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.kind[i] != Kind::Soil) continue;
-    x.push_back(P.x[i]);
-    y.push_back(P.y[i]);
-    v.push_back(std::hypot(P.vx[i], P.vy[i]));
-  }
-  rec.snapshot = {{"x", x}, {"y", y}, {"values", v}, {"field", "speed (failed trial nearest F)"}, {"units", "m/s"}};
+  rec.snapshot = field_snapshot(r.failed_state, "speed", "m/s");
+  rec.snapshot["field"] = "speed (failed trial nearest F)";
   return rec;
 }
 
