@@ -32,6 +32,7 @@ using Matrix3d = Eigen::Matrix3d;
 // (pointers into Particles; f[k] is the k-th name of the model's state_fields).
 struct SolidState {
   std::array<double*, 4> f{};
+  double dt = 0;  // the step's length [s], for rate-dependent models
 };
 
 struct SolidUpdate {

@@ -8,6 +8,7 @@
 #include "materials/drucker_prager.hpp"
 #include "materials/linear_elastic.hpp"
 #include "materials/modified_cam_clay.hpp"
+#include "materials/mu_i.hpp"
 #include "materials/mohr_coulomb.hpp"
 #include "materials/von_mises.hpp"
 
@@ -18,6 +19,7 @@ using SolidModel = std::variant<
     ModifiedCamClay,
     LinearElastic,
     VonMises,
-    MohrCoulomb>;
+    MohrCoulomb,
+    MuI>;
 
 }  // namespace geosph::materials

@@ -112,7 +112,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   gather_soil_view(P);
   const double* mass = mass_.data();
   const double* dens = rho_.data();
-  const std::vector<materials::SolidState> states = bind_states(P);
+  std::vector<materials::SolidState> states = bind_states(P);
+  for (auto& st : states) st.dt = dt;
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
   const int dim = scene_.dim;
