@@ -4,6 +4,7 @@
 #include "coupling/seepage_fields.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -19,6 +20,26 @@ void SoilWalls::allocate(Particles& P) const {
   // until the first update the soil sees the walls as built (boundary/geometry.cpp)
   P.add_field(SoilWallFields::rho, SoilWallFields::owner) = P.rho;
   P.add_field(SoilWallFields::m, SoilWallFields::owner) = P.m;
+}
+
+void SoilWalls::mark_read_walls(const Particles& P, const CellList& cells) const {
+  const std::size_t n = P.size();
+  read_.assign(n, 0);
+  std::uint8_t* read = read_.data();
+  const Kind* kind = P.kind.data();
+#pragma omp parallel
+  {
+  Neighbors nb;
+#pragma omp for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind[i] == Kind::DummyWall) continue;
+    cells.gather_any_dim(P, i, nb);
+    for (std::size_t k = 0; k < nb.n; ++k) {
+      const std::uint32_t j = nb.j[k];
+      if (kind[j] == Kind::DummyWall) std::atomic_ref<std::uint8_t>(read[j]).store(1, std::memory_order_relaxed);
+    }
+  }
+  }
 }
 
 void SoilWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
@@ -39,9 +60,18 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
         const double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
         const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
+        mark_read_walls(P, cells);
+        const double rho0_far = scene_.soils.front().density;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
+          if (!read_[w]) {  // no particle has it in its support: the values of a wall without soil around
+            for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
+            for (int a = 0; a < 3; ++a) wv[a][w] = 0;
+            wrho[w] = rho0_far;
+            wm[w] = rho0_far * volume;
+            continue;
+          }
           const bool no_slip = slip ? slip[w] == 0 : no_slip_;
           const double shear_sign = no_slip ? 1.0 : -1.0;
           double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;

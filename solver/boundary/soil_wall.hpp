@@ -23,6 +23,8 @@
 // (rankine_passive).
 #pragma once
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -46,8 +48,13 @@ class SoilWalls {
   void update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
  private:
+  // read_[w] = 1 for the dummy particles in the support of any other particle (soil, structure, or
+  // pore water, which all read the soil's ghost values); the others, most of a large floor or a 3D
+  // container, get the values of a wall without soil around without a neighbour loop of their own
+  void mark_read_walls(const Particles& P, const CellList& cells) const;
   const Scene& scene_;
   bool no_slip_;
+  mutable std::vector<std::uint8_t> read_;
 };
 
 }  // namespace geosph
