@@ -343,3 +343,27 @@ TEST(Geometry, StlSurfaces) {
   }
   expect_shape_error([] { make_stl(std::filesystem::temp_directory_path() / "geosph_no_such.stl"); }, "cannot be read");
 }
+
+// The wall shell's block skip keeps exactly the points, in the same order, that the per-point test
+// keeps (inside and within shell of the surface): a ball, a tunnel, a 2D slope and an STL cube.
+TEST(Geometry, WallShellBlockSkipKeepsEveryShellPoint) {
+  const auto per_point = [](const Shape& s, double dx, double shell) {
+    std::vector<Point> out;
+    for (const Point& p : fill_lattice(s, dx))
+      if (s.distance(p) > -shell) out.push_back(p);
+    return out;
+  };
+  const ShapePtr stl = make_stl(write_binary_stl("geosph_cube_shell.stl", cube_triangles()));
+  const std::vector<std::pair<ShapePtr, double>> shapes = {
+      {make_ball(3, {0.5, 0.5, 0.5}, 0.5), 0.02},
+      {make_difference(3, {make_box(3, {0, 0, 0}, {1, 1, 1}), make_cylinder({0.5, 0.5, 0.5}, 0, 0.25, 1.2)}), 0.025},
+      {slope(), 0.2},
+      {stl, 0.02}};
+  for (const auto& [s, dx] : shapes) {
+    const double shell = 3 * dx;
+    const auto blocked = fill_lattice(*s, dx, shell);
+    EXPECT_EQ(blocked, per_point(*s, dx, shell)) << s->describe();
+    EXPECT_GT(blocked.size(), 0u);
+    EXPECT_LT(blocked.size(), fill_lattice(*s, dx).size());  // the deep inside is left out
+  }
+}
