@@ -8,38 +8,28 @@
 #include <stdexcept>
 #include <string>
 
+#include "soil/parameter_error.hpp"
+
 namespace geosph::soil {
 
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-[[noreturn]] void reject(const std::string& field, const std::string& range, double value,
-                         bool in_degrees = false) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << field << " must be " << range << ", got ";
-  if (in_degrees)
-    msg << value * kDeg << " degrees";
-  else
-    msg << value;
-  throw std::invalid_argument(msg.str());
-}
-
 }  // namespace
 
 void validate(const DruckerPragerParams& p) {
   // Comparisons are written so that NaN fails them.
-  if (!(p.young > 0.0) || !std::isfinite(p.young)) reject("young", "> 0 (Young's modulus, Pa)", p.young);
-  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
-  if (!(p.cohesion >= 0.0) || !std::isfinite(p.cohesion)) reject("cohesion", ">= 0 (Pa)", p.cohesion);
+  if (!(p.young > 0.0) || !std::isfinite(p.young)) reject_parameter("young", "> 0 (Young's modulus, Pa)", p.young);
+  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject_parameter("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
+  if (!(p.cohesion >= 0.0) || !std::isfinite(p.cohesion)) reject_parameter("cohesion", ">= 0 (Pa)", p.cohesion);
   if (!(p.friction_angle >= 0.0 && p.friction_angle < 0.5 * std::numbers::pi))
-    reject("friction_angle", "in [0, 90) degrees", p.friction_angle, true);
+    reject_parameter("friction_angle", "in [0, 90) degrees", p.friction_angle, true);
   if (!(p.dilatancy_angle >= 0.0 && p.dilatancy_angle <= p.friction_angle)) {
     std::ostringstream range;
     range.precision(10);
     range << "in [0, friction_angle] = [0, " << p.friction_angle * kDeg << "] degrees";
-    reject("dilatancy_angle", range.str(), p.dilatancy_angle, true);
+    reject_parameter("dilatancy_angle", range.str(), p.dilatancy_angle, true);
   }
 }
 

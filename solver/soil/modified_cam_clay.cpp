@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "soil/parameter_error.hpp"
+
 namespace geosph::soil {
 
 namespace {
@@ -16,13 +18,6 @@ constexpr int kMaxIterations = 50;
 constexpr double kYieldTolerance = 1e-12;   // |f| <= tol * p_c,n+1^2
 constexpr double kAcceptTolerance = 1e-10;  // accepted when the bracket has collapsed first
 constexpr int kMaxInnerIterations = 200;
-
-[[noreturn]] void reject(const std::string& field, const std::string& range, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << field << " must be " << range << ", got " << value;
-  throw std::invalid_argument(msg.str());
-}
 
 // Exact solution of dp = max(p, a) dy from p(0) = pn (y = v eps_v^e / kappa, compression
 // positive): p = pn e^y while p >= a, linear with slope a below a. Continuous with a continuous
@@ -72,19 +67,19 @@ inline Matrix3d deviator(const Matrix3d& m) {
 
 void validate(const ModifiedCamClayParams& p) {
   // Comparisons are written so that NaN fails them.
-  if (!(p.kappa > 0.0) || !std::isfinite(p.kappa)) reject("kappa", "> 0 (slope of the unloading-reloading line)", p.kappa);
+  if (!(p.kappa > 0.0) || !std::isfinite(p.kappa)) reject_parameter("kappa", "> 0 (slope of the unloading-reloading line)", p.kappa);
   if (!(p.lambda > p.kappa) || !std::isfinite(p.lambda)) {
     std::ostringstream range;
     range.precision(10);
     range << "> kappa = " << p.kappa << " (slope of the normal compression line)";
-    reject("lambda", range.str(), p.lambda);
+    reject_parameter("lambda", range.str(), p.lambda);
   }
-  if (!(p.M > 0.0) || !std::isfinite(p.M)) reject("M", "> 0 (critical state line slope)", p.M);
-  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
+  if (!(p.M > 0.0) || !std::isfinite(p.M)) reject_parameter("M", "> 0 (critical state line slope)", p.M);
+  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject_parameter("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
   if (!(p.specific_volume > 1.0) || !std::isfinite(p.specific_volume))
-    reject("specific_volume", "> 1 (v = 1 + e)", p.specific_volume);
+    reject_parameter("specific_volume", "> 1 (v = 1 + e)", p.specific_volume);
   if (!(p.min_pressure > 0.0) || !std::isfinite(p.min_pressure))
-    reject("min_pressure", "> 0 (floor on p' in the elastic moduli, Pa)", p.min_pressure);
+    reject_parameter("min_pressure", "> 0 (floor on p' in the elastic moduli, Pa)", p.min_pressure);
 }
 
 ModifiedCamClay::ModifiedCamClay(const ModifiedCamClayParams& params) : params_(params) {
@@ -111,10 +106,10 @@ double ModifiedCamClay::bulk_modulus(double p) const { return c_ * std::max(p, p
 double ModifiedCamClay::shear_modulus(double p) const { return shear_ratio_ * bulk_modulus(p); }
 
 double ModifiedCamClay::preconsolidation_for(double p, double q, double M, double ocr) {
-  if (!(p > 0.0) || !std::isfinite(p)) reject("preconsolidation_for: p", "> 0 (Pa)", p);
-  if (!(q >= 0.0) || !std::isfinite(q)) reject("preconsolidation_for: q", ">= 0 (Pa)", q);
-  if (!(M > 0.0) || !std::isfinite(M)) reject("preconsolidation_for: M", "> 0", M);
-  if (!(ocr >= 1.0) || !std::isfinite(ocr)) reject("preconsolidation_for: ocr", ">= 1", ocr);
+  if (!(p > 0.0) || !std::isfinite(p)) reject_parameter("preconsolidation_for: p", "> 0 (Pa)", p);
+  if (!(q >= 0.0) || !std::isfinite(q)) reject_parameter("preconsolidation_for: q", ">= 0 (Pa)", q);
+  if (!(M > 0.0) || !std::isfinite(M)) reject_parameter("preconsolidation_for: M", "> 0", M);
+  if (!(ocr >= 1.0) || !std::isfinite(ocr)) reject_parameter("preconsolidation_for: ocr", ">= 1", ocr);
   return ocr * (p + q * q / (M * M * p));
 }
 

@@ -2,32 +2,21 @@
 #include "soil/mu_i_rheology.hpp"
 
 #include <cmath>
-#include <sstream>
-#include <stdexcept>
-#include <string>
 
 #include "soil/drucker_prager.hpp"
+#include "soil/parameter_error.hpp"
 
 namespace geosph::soil {
 
-namespace {
-[[noreturn]] void reject(const std::string& field, const std::string& range, double value) {
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << field << " must be " << range << ", got " << value;
-  throw std::invalid_argument(msg.str());
-}
-}  // namespace
-
 void validate(const MuIParams& p) {
   // Comparisons are written so that NaN fails them.
-  if (!(p.young > 0.0) || !std::isfinite(p.young)) reject("young", "> 0 (Young's modulus, Pa)", p.young);
-  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
-  if (!(p.mu_s >= 0.0) || !std::isfinite(p.mu_s)) reject("mu_s", ">= 0", p.mu_s);
-  if (!(p.mu_2 >= p.mu_s) || !std::isfinite(p.mu_2)) reject("mu_2", ">= mu_s", p.mu_2);
-  if (!(p.i0 > 0.0) || !std::isfinite(p.i0)) reject("i0", "> 0", p.i0);
-  if (!(p.grain_diameter > 0.0) || !std::isfinite(p.grain_diameter)) reject("grain_diameter", "> 0 (m)", p.grain_diameter);
-  if (!(p.grain_density > 0.0) || !std::isfinite(p.grain_density)) reject("grain_density", "> 0 (kg/m^3)", p.grain_density);
+  if (!(p.young > 0.0) || !std::isfinite(p.young)) reject_parameter("young", "> 0 (Young's modulus, Pa)", p.young);
+  if (!(p.poisson > -1.0 && p.poisson < 0.5)) reject_parameter("poisson", "in (-1, 0.5) (Poisson's ratio)", p.poisson);
+  if (!(p.mu_s >= 0.0) || !std::isfinite(p.mu_s)) reject_parameter("mu_s", ">= 0", p.mu_s);
+  if (!(p.mu_2 >= p.mu_s) || !std::isfinite(p.mu_2)) reject_parameter("mu_2", ">= mu_s", p.mu_2);
+  if (!(p.i0 > 0.0) || !std::isfinite(p.i0)) reject_parameter("i0", "> 0", p.i0);
+  if (!(p.grain_diameter > 0.0) || !std::isfinite(p.grain_diameter)) reject_parameter("grain_diameter", "> 0 (m)", p.grain_diameter);
+  if (!(p.grain_density > 0.0) || !std::isfinite(p.grain_density)) reject_parameter("grain_density", "> 0 (kg/m^3)", p.grain_density);
 }
 
 MuIRheology::MuIRheology(const MuIParams& params) : params_(params) {
