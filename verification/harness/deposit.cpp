@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace geosph::verify {
 
@@ -43,6 +44,24 @@ double max_soil_speed(const Particles& P) {
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.kind[i] == Kind::Soil) v2 = std::max(v2, P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
   return std::sqrt(v2);
+}
+
+std::vector<SandModel> sand_models(const CaseConfig& cfg) {
+  const nlohmann::json& all = cfg.spec.at("sand_models");
+  std::vector<std::string> names;
+  if (cfg.level.contains("sand_models"))
+    names = cfg.level.at("sand_models").get<std::vector<std::string>>();
+  else
+    for (const auto& m : all.items()) names.push_back(m.key());
+  std::vector<SandModel> out;
+  for (const auto& n : names) {
+    if (!all.contains(n))
+      throw std::invalid_argument(cfg.name + "/case.json: the level names sand model '" + n +
+                                  "', which is not in \"sand_models\"");
+    const auto& m = all.at(n);
+    out.push_back({n, m.at("material"), m.value("scored", true)});
+  }
+  return out;
 }
 
 }  // namespace geosph::verify

@@ -1,11 +1,13 @@
 // Measures of a granular deposit (soil particles on a horizontal floor), shared by the column
 // collapse cases.
 #pragma once
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/particles.hpp"
+#include "harness/case_config.hpp"
 
 namespace geosph::verify {
 
@@ -27,5 +29,17 @@ double scaling_law(const nlohmann::json& entries, double a);
 
 // Largest speed of any soil particle.
 double max_soil_speed(const Particles& P);
+
+// One sand model of a collapse case: case.json's "sand_models" maps a name to
+// {"material": <the scene's material object>, "scored": bool, "why": "..."}; an unscored model's
+// records are studies shown beside the scored one (the reason is "why").
+struct SandModel {
+  std::string name;
+  nlohmann::json material;
+  bool scored = true;
+};
+// The models the level asks for (its "sand_models" list, in that order; all of them, by name, when
+// the level names none). The case's scene gets the model's material as "sand".
+std::vector<SandModel> sand_models(const CaseConfig& cfg);
 
 }  // namespace geosph::verify

@@ -2,9 +2,10 @@
 // scaling laws of Lube, Huppert, Sparks & Freundt (2005) and Lajeunesse, Monnier & Homsy (2005):
 // normalised run-out (L_inf - L0)/L0 ~ a (small a) and ~ a^(2/3) (large a), final height
 // H_inf/L0 ~ a^(2/5) (Lube) or a^(1/3) (Lajeunesse) at large a. One SPH collapse per a (the
-// Drucker-Prager column of soil/, released against the back wall, run until it has stopped); the
-// exponents of the two regimes, fitted in log-log by least squares (GSL), are scored; the
-// prefactors, which depend on the material, are recorded per a as unscored studies.
+// sand column of each of the case's sand models, released against the back wall, run until it has
+// stopped); the exponents of the two regimes, fitted in log-log by least squares (GSL), are scored
+// for the scored model and shown beside it for the others; the prefactors, which depend on the
+// material, are recorded per a as unscored studies.
 
 #include <gsl/gsl_fit.h>
 
@@ -58,7 +59,7 @@ struct Collapse {
 
 // One column of aspect ratio a: scene built from the case's template, run in chunks until the soil
 // has stopped moving.
-Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, double a, double dx) {
+Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, const SandModel& model, double a, double dx) {
   const double L0 = cfg.spec.at("column_length_m"), H0 = a * L0, g = 9.81;
   const double t_ref = std::sqrt(H0 / g);
   // floor long enough for twice the larger of the two experimental run-outs, plus a margin
@@ -67,6 +68,7 @@ Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, double a, doubl
   const double margin = 8 * dx;
   nlohmann::json j = cfg.scene_json;
   j["dx"] = dx;
+  j["materials"]["sand"] = model.material;
   j["bodies"][0]["min"] = {0.0, 0.0};
   j["bodies"][0]["max"] = {L0, H0};
   j["walls"]["containers"][0]["min"] = {0.0, 0.0};
@@ -80,8 +82,8 @@ Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, double a, doubl
   Simulation sim(scene);
   c.rec = start_record(cfg, ctx);
   char variant[32];
-  std::snprintf(variant, sizeof variant, "a=%g", a);
-  c.rec.variant = variant;
+  std::snprintf(variant, sizeof variant, " a=%g", a);
+  c.rec.variant = model.name + variant;
   c.rec.scored = false;
   c.rec.extra["aspect_ratio"] = a;
 
@@ -121,16 +123,19 @@ Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, double a, doubl
 namespace {
 // All aspect ratios at one spacing: the summary record (scored exponents) first, then one study
 // record per aspect ratio.
-std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, const nlohmann::json& laws, double dx) {
+std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, const nlohmann::json& laws,
+                               const SandModel& model, double dx) {
   const double small_max = cfg.spec.at("small_a_max"), large_min = cfg.spec.at("large_a_min");
 
   std::vector<Record> out;
   Record summary = start_record(cfg, ctx);
+  summary.variant = model.name;
+  summary.scored = model.scored;
   std::vector<double> as, runouts, heights;
   bool all_ok = true;
   for (double a : cfg.spec.at("aspect_ratios").get<std::vector<double>>()) {
-    std::fprintf(stderr, "-- a = %g, dx = %g\n", a, dx);
-    Collapse c = collapse(cfg, ctx, a, dx);
+    std::fprintf(stderr, "-- %s, a = %g, dx = %g\n", model.name.c_str(), a, dx);
+    Collapse c = collapse(cfg, ctx, model, a, dx);
     const bool ok = c.stable && c.stopped && c.inside;
     all_ok = all_ok && ok;
     as.push_back(a);
@@ -213,10 +218,11 @@ std::vector<Record> run_granular_collapse_scaling(const CaseContext& ctx, const 
   const CaseConfig cfg = load_case(ctx, case_name);
   const nlohmann::json laws = read_json_file(cfg.reference_file(ctx, cfg.spec.at("laws")));
   std::vector<Record> out;
-  for (double dx : cfg.level_numbers("dx")) {
-    auto recs = scaling_at(cfg, ctx, laws, dx);
-    out.insert(out.end(), std::make_move_iterator(recs.begin()), std::make_move_iterator(recs.end()));
-  }
+  for (const SandModel& model : sand_models(cfg))
+    for (double dx : cfg.level_numbers("dx")) {
+      auto recs = scaling_at(cfg, ctx, laws, model, dx);
+      out.insert(out.end(), std::make_move_iterator(recs.begin()), std::make_move_iterator(recs.end()));
+    }
   return out;
 }
 
