@@ -59,7 +59,7 @@ std::vector<SandModel> sand_models(const CaseConfig& cfg) {
       throw std::invalid_argument(cfg.name + "/case.json: the level names sand model '" + n +
                                   "', which is not in \"sand_models\"");
     const auto& m = all.at(n);
-    out.push_back({n, m.at("material"), m.value("scored", true)});
+    out.push_back({n, m.at("material"), m.value("scored", true), m.value("why", std::string())});
   }
   return out;
 }

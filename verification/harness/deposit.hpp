@@ -37,6 +37,8 @@ struct SandModel {
   std::string name;
   nlohmann::json material;
   bool scored = true;
+  std::string why;  // what the model is and why it is (not) scored, into each record as "sand_model"
+  nlohmann::json describe() const { return {{"name", name}, {"scored", scored}, {"why", why}}; }
 };
 // The models the level asks for (its "sand_models" list, in that order; all of them, by name, when
 // the level names none). The case's scene gets the model's material as "sand".

@@ -80,6 +80,7 @@ Record collapse(const CaseConfig& cfg, const CaseContext& ctx, const nlohmann::j
   std::snprintf(variant, sizeof variant, " a=%g", a);
   rec.variant = model.name + variant;
   rec.scored = model.scored;
+  rec.extra["sand_model"] = model.describe();
   rec.extra["aspect_ratio"] = a;
   rec.extra["column_radius_over_dx"] = r0 / dx;
   Series front{"SPH run-out", "simulation", "runout_history", "t [s]", "(r - r0)/r0", {}, {}};

@@ -86,6 +86,7 @@ Collapse collapse(const CaseConfig& cfg, const CaseContext& ctx, const SandModel
   c.rec.variant = model.name + variant;
   c.rec.scored = false;
   c.rec.extra["aspect_ratio"] = a;
+  c.rec.extra["sand_model"] = model.describe();
 
   Series front{"SPH run-out", "simulation", "runout_history", "t [s]", "(L - L0)/L0", {}, {}};
   const double v_stop = cfg.spec.at("stop_speed_fraction").get<double>() * std::sqrt(g * H0);
@@ -131,6 +132,7 @@ std::vector<Record> scaling_at(const CaseConfig& cfg, const CaseContext& ctx, co
   Record summary = start_record(cfg, ctx);
   summary.variant = model.name;
   summary.scored = model.scored;
+  summary.extra["sand_model"] = model.describe();
   std::vector<double> as, runouts, heights;
   bool all_ok = true;
   for (double a : cfg.spec.at("aspect_ratios").get<std::vector<double>>()) {
