@@ -72,10 +72,10 @@ double DruckerPrager::potential(const Matrix3d& sigma) const {
   return alpha_psi_ * I1 + sqrt_J2(s);
 }
 
-Matrix3d DruckerPrager::elastic_increment(const Matrix3d& de) const {
+Matrix3d DruckerPrager::hooke_increment(double K, double G, const Matrix3d& de) {
   const double tr = de.trace();
-  Matrix3d d = (2.0 * G_) * de;
-  d.diagonal().array() += (K_ - 2.0 * G_ / 3.0) * tr;
+  Matrix3d d = (2.0 * G) * de;
+  d.diagonal().array() += (K - 2.0 * G / 3.0) * tr;
   return d;
 }
 

@@ -111,7 +111,9 @@ class DruckerPrager {
   double potential(const Matrix3d& sigma) const;  // g = alpha_psi I1 + sqrt(J2)
 
   // D : de = 2 G dev(de) + K tr(de) I
-  Matrix3d elastic_increment(const Matrix3d& strain_increment) const;
+  Matrix3d elastic_increment(const Matrix3d& strain_increment) const { return hooke_increment(K_, G_, strain_increment); }
+  // the same for any bulk and shear modulus (the isotropic elastic predictor the soil models share)
+  static Matrix3d hooke_increment(double bulk, double shear, const Matrix3d& strain_increment);
   // sigma + sigma W^T + W sigma (sigma symmetric; the result is symmetric)
   static Matrix3d jaumann_rotate(const Matrix3d& sigma, const Matrix3d& spin_increment);
   // Closest-point return of a trial stress (step (c) alone).

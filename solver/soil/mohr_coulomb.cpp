@@ -72,12 +72,7 @@ double MohrCoulomb::yield(const Matrix3d& sigma) const {
   return (s(2) - s(0)) + (s(2) + s(0)) * sin_phi_ - two_c_cos_phi_;  // ascending: s(2) = sigma_1
 }
 
-Matrix3d MohrCoulomb::elastic_increment(const Matrix3d& de) const {
-  const double tr = de.trace();
-  Matrix3d d = (2.0 * G_) * de;
-  d.diagonal().array() += (K_ - 2.0 * G_ / 3.0) * tr;
-  return d;
-}
+Matrix3d MohrCoulomb::elastic_increment(const Matrix3d& de) const { return DruckerPrager::hooke_increment(K_, G_, de); }
 
 namespace {
 

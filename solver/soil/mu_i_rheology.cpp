@@ -32,9 +32,7 @@ double MuIRheology::friction(double I) const {
 MuIResult MuIRheology::update(const Eigen::Matrix3d& sigma_n, const Eigen::Matrix3d& de, const Eigen::Matrix3d& dw,
                               double dt) const {
   const Eigen::Matrix3d I3 = Eigen::Matrix3d::Identity();
-  const double tr_de = de.trace();
-  Eigen::Matrix3d trial = DruckerPrager::jaumann_rotate(sigma_n, dw);
-  trial += 2.0 * G_ * (de - tr_de / 3.0 * I3) + K_ * tr_de * I3;
+  const Eigen::Matrix3d trial = DruckerPrager::jaumann_rotate(sigma_n, dw) + DruckerPrager::hooke_increment(K_, G_, de);
   MuIResult r;
   const double p = -trial.trace() / 3.0;
   const Eigen::Matrix3d s = trial + p * I3;
