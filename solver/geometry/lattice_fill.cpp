@@ -9,20 +9,37 @@ namespace geosph::geometry {
 
 namespace {
 
-// The points (i + 1/2) dx of the lattice anchored at the origin that lie in the window (a box), in
-// lattice order, until f returns false; returns whether it stopped early.
+// The index range [i0, i1) per axis of the lattice points (i + 1/2) dx, anchored at the origin, that
+// cover the window (a box); axes beyond d have the single index 0.
+struct LatticeRange {
+  std::array<long, 3> i0{0, 0, 0}, i1{1, 1, 1};
+};
+LatticeRange lattice_range(int d, double dx, const Bounds& window) {
+  LatticeRange r;
+  for (int a = 0; a < d; ++a) {
+    r.i0[a] = static_cast<long>(std::floor(window.lo[a] / dx - 0.5));
+    r.i1[a] = static_cast<long>(std::ceil(window.hi[a] / dx - 0.5)) + 1;
+  }
+  return r;
+}
+
+// The points of the range in lattice order (x fastest), f(point, index), until f returns false;
+// returns whether it stopped early.
+template <class F>
+bool visit_lattice_range(int d, double dx, const LatticeRange& r, F&& f) {
+  for (long k = r.i0[2]; k < r.i1[2]; ++k)
+    for (long j = r.i0[1]; j < r.i1[1]; ++j)
+      for (long i = r.i0[0]; i < r.i1[0]; ++i)
+        if (!f(Point{(i + 0.5) * dx, (j + 0.5) * dx, d == 3 ? (k + 0.5) * dx : 0.0}, std::array<long, 3>{i, j, k}))
+          return true;
+  return false;
+}
+
+// The lattice points that lie in the window, in lattice order, until f(point) returns false.
 template <class F>
 bool visit_lattice_points(int d, double dx, const Bounds& window, F&& f) {
-  std::array<long, 3> i0{0, 0, 0}, i1{1, 1, 1};
-  for (int a = 0; a < d; ++a) {
-    i0[a] = static_cast<long>(std::floor(window.lo[a] / dx - 0.5));
-    i1[a] = static_cast<long>(std::ceil(window.hi[a] / dx - 0.5)) + 1;
-  }
-  for (long k = i0[2]; k < i1[2]; ++k)
-    for (long j = i0[1]; j < i1[1]; ++j)
-      for (long i = i0[0]; i < i1[0]; ++i)
-        if (!f(Point{(i + 0.5) * dx, (j + 0.5) * dx, d == 3 ? (k + 0.5) * dx : 0.0})) return true;
-  return false;
+  return visit_lattice_range(d, dx, lattice_range(d, dx, window),
+                             [&](const Point& p, const std::array<long, 3>&) { return f(p); });
 }
 
 }  // namespace
@@ -42,13 +59,13 @@ std::vector<Point> fill_lattice(const Shape& s, double dx, double shell) {
   // inside a large STL body the AABB tree's closest-point search is the slow query.
   constexpr long kBlock = 8;
   const int d = s.dim();
-  const Bounds window = s.bounds();
-  std::array<long, 3> i0{0, 0, 0}, i1{1, 1, 1}, nb{1, 1, 1};
-  for (int a = 0; a < d; ++a) {
-    i0[a] = static_cast<long>(std::floor(window.lo[a] / dx - 0.5));
-    i1[a] = static_cast<long>(std::ceil(window.hi[a] / dx - 0.5)) + 1;
-    nb[a] = (i1[a] - i0[a] + kBlock - 1) / kBlock;
-  }
+  const LatticeRange r = lattice_range(d, dx, s.bounds());
+  std::array<long, 3> nb{1, 1, 1};
+  for (int a = 0; a < d; ++a) nb[a] = (r.i1[a] - r.i0[a] + kBlock - 1) / kBlock;
+  const auto block_of = [&](const std::array<long, 3>& idx) {
+    return static_cast<std::size_t>((((idx[2] - r.i0[2]) / kBlock) * nb[1] + (idx[1] - r.i0[1]) / kBlock) * nb[0] +
+                                    (idx[0] - r.i0[0]) / kBlock);
+  };
   std::vector<char> near(static_cast<std::size_t>(nb[0] * nb[1] * nb[2]), 1);
   for (long bk = 0; bk < nb[2]; ++bk)
     for (long bj = 0; bj < nb[1]; ++bj)
@@ -57,22 +74,17 @@ std::vector<Point> fill_lattice(const Shape& s, double dx, double shell) {
         Point c{0, 0, 0};
         double half2 = 0;
         for (int a = 0; a < d; ++a) {
-          const long lo = i0[a] + b[a] * kBlock, hi = std::min(i1[a], lo + kBlock) - 1;
+          const long lo = r.i0[a] + b[a] * kBlock, hi = std::min(r.i1[a], lo + kBlock) - 1;
           c[a] = (0.5 * static_cast<double>(lo + hi) + 0.5) * dx;
           const double half = 0.5 * static_cast<double>(hi - lo) * dx;
           half2 += half * half;
         }
         near[static_cast<std::size_t>((bk * nb[1] + bj) * nb[0] + bi)] = std::abs(s.distance(c)) <= shell + std::sqrt(half2);
       }
-  for (long k = i0[2]; k < i1[2]; ++k)
-    for (long j = i0[1]; j < i1[1]; ++j)
-      for (long i = i0[0]; i < i1[0]; ++i) {
-        const std::size_t blk = static_cast<std::size_t>((((k - i0[2]) / kBlock) * nb[1] + (j - i0[1]) / kBlock) * nb[0] +
-                                                         (i - i0[0]) / kBlock);
-        if (!near[blk]) continue;
-        const Point p{(i + 0.5) * dx, (j + 0.5) * dx, d == 3 ? (k + 0.5) * dx : 0.0};
-        if (s.contains(p, dx) && s.distance(p) > -shell) out.push_back(p);
-      }
+  visit_lattice_range(d, dx, r, [&](const Point& p, const std::array<long, 3>& idx) {
+    if (near[block_of(idx)] && s.contains(p, dx) && s.distance(p) > -shell) out.push_back(p);
+    return true;
+  });
   return out;
 }
 
