@@ -24,9 +24,24 @@ void SoilWalls::allocate(Particles& P) const {
 
 void SoilWalls::mark_read_walls(const Particles& P, const CellList& cells) const {
   const std::size_t n = P.size();
+  const Kind* kind = P.kind.data();
+  if (cells.pairs_cached()) {
+    // from the pair list, once per list build: a wall none of whose listed candidates is another kind's
+    // particle is in no support until the next build (the list is symmetric)
+    if (marked_build_ == cells.pair_list_builds() && read_.size() == n) return;
+    read_.assign(n, 0);
+#pragma omp parallel for schedule(static)
+    for (std::size_t w = 0; w < n; ++w) {
+      if (kind[w] != Kind::DummyWall) continue;
+      for (const std::uint32_t j : cells.listed(w))
+        if (kind[j] != Kind::DummyWall) { read_[w] = 1; break; }
+    }
+    marked_build_ = cells.pair_list_builds();
+    return;
+  }
+  marked_build_ = -1;
   read_.assign(n, 0);
   std::uint8_t* read = read_.data();
-  const Kind* kind = P.kind.data();
 #pragma omp parallel
   {
   Neighbors nb;
@@ -65,19 +80,21 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
-          if (!read_[w]) {  // no particle has it in its support: the values of a wall without soil around
+          const auto far_wall = [&] {  // in no particle's support: the values of a wall without soil around
             for (int c = 0; c < ncomp; ++c) s[c][w] = 0;
             for (int a = 0; a < 3; ++a) wv[a][w] = 0;
             wrho[w] = rho0_far;
             wm[w] = rho0_far * volume;
-            continue;
-          }
+          };
+          if (!read_[w]) { far_wall(); continue; }
           const bool no_slip = slip ? slip[w] == 0 : no_slip_;
           const double shear_sign = no_slip ? 1.0 : -1.0;
           double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;
           std::uint16_t mat = 0;
           bool covered = false;  // the centre lies inside a structure particle's cell: the structure is there
+          bool in_support = false;  // another kind's particle within the support (and so this wall in its)
           cells.for_each_neighbor(P, w, [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
+            in_support = in_support || P.kind[k] != Kind::DummyWall;
             if (is_structure(P.kind[k])) {
               covered = covered || std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) < 0.5 * scene_.dx;
               return;
@@ -92,6 +109,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             sd[0] += W * dx; sd[1] += W * dy; sd[2] += W * dz;
             if (W > wmax) { wmax = W; mat = P.material[k]; }
           });
+          if (!in_support) { far_wall(); continue; }  // a listed candidate, not (yet) within the support
           const double rho0 = scene_.soils[mat].density;
           wrho[w] = rho0;
           wm[w] = covered ? 0.0 : rho0 * volume;  // a covered ghost leaves the soil's sums

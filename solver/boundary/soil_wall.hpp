@@ -48,13 +48,17 @@ class SoilWalls {
   void update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
  private:
-  // read_[w] = 1 for the dummy particles in the support of any other particle (soil, structure, or
-  // pore water, which all read the soil's ghost values); the others, most of a large floor or a 3D
-  // container, get the values of a wall without soil around without a neighbour loop of their own
+  // read_[w] = 1 for the dummy particles that may be in the support of another kind's particle (soil,
+  // structure, or pore water, which all read the soil's ghost values): with a pair list, those with such
+  // a particle among their listed candidates (marked once per list build), else those found in the
+  // support by that particle's own neighbour query. The others, most of a large floor or a 3D
+  // container, get the values of a wall without soil around without a neighbour loop of their own;
+  // update() gives the same values to a marked wall its own neighbour query finds in no support.
   void mark_read_walls(const Particles& P, const CellList& cells) const;
   const Scene& scene_;
   bool no_slip_;
   mutable std::vector<std::uint8_t> read_;
+  mutable long marked_build_ = -1;  // the pair list build read_ was marked from, -1 for none
 };
 
 }  // namespace geosph

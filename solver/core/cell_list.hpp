@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <span>
 #include <vector>
 
 #include "core/particles.hpp"
@@ -122,6 +123,11 @@ class CellList {
   long find_outside(const Particles& P, const Box& box) const;
   bool pairs_cached() const { return cached_; }
   long pair_list_builds() const { return list_builds_; }
+  // The listed candidates of i (within radius + skin at the list's build, ascending); pairs_cached() only.
+  // The list is symmetric: j is listed for i exactly when i is listed for j.
+  std::span<const std::uint32_t> listed(std::size_t i) const {
+    return {pair_j_.data() + pair_start_[i], pair_start_[i + 1] - pair_start_[i]};
+  }
 
   // f(j, dx, dy, dz, r2) for every j != i with r2 < radius^2; d = x_i - x_j (minimum image).
   // The neighbours are gathered first into a per-thread buffer, so that f has a single call site
