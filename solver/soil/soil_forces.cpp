@@ -111,12 +111,11 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   double* eps_p = P.field(SoilFields::plastic_strain).data();
   gather_soil_view(P);
   const double* mass = mass_.data();
-  const double* dens = rho_.data();
+  const double* vol = volume_.data();
   std::vector<materials::SolidState> states = bind_states(P);
   for (auto& st : states) st.dt = dt;
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
-  const int dim = scene_.dim;
   const Kind* kind = P.kind.data();
   const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
   const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
@@ -139,7 +138,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0;
       const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k]));
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
-      const double mj = mass[j], Vj = mj / dens[j];
+      const double mj = mass[j], Vj = vol[j];
       // continuity with the wall's own (prescribed) velocity
       drho += mj * ((vxi - vx[j]) * grad[0] + (vyi - vy[j]) * grad[1] + (vzi - vz[j]) * grad[2]);
       // the velocity gradient with the walls' ghost velocity (boundary/soil_wall.cpp)
@@ -155,16 +154,16 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
     if (correct) {
       // L <- L B^-1 on the in-plane block (B is the identity for a full, regular support)
       Eigen::Matrix3d Bm = Eigen::Matrix3d::Identity(), Lm = Eigen::Matrix3d::Zero();
-      for (int a = 0; a < dim; ++a)
-        for (int b = 0; b < dim; ++b) { Bm(a, b) = B[a][b]; Lm(a, b) = L[a][b]; }
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) { Bm(a, b) = B[a][b]; Lm(a, b) = L[a][b]; }
       bool invertible = false;
       Eigen::Matrix3d Binv;
       double det = 0;
       Bm.computeInverseAndDetWithCheck(Binv, det, invertible, 1e-3);
       if (invertible) {
         const Eigen::Matrix3d Lc = Lm * Binv;
-        for (int a = 0; a < dim; ++a)
-          for (int b = 0; b < dim; ++b) L[a][b] = Lc(a, b);
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) L[a][b] = Lc(a, b);
       }
     }
     P.drho[i] = drho;
@@ -220,6 +219,7 @@ void SoilForces::gather_soil_view(const Particles& P) const {
   const std::size_t n = P.size();
   mass_.resize(n);
   rho_.resize(n);
+  volume_.resize(n);
   ghost_vx_.resize(n);
   ghost_vy_.resize(n);
   ghost_vz_.resize(n);
@@ -234,6 +234,7 @@ void SoilForces::gather_soil_view(const Particles& P) const {
     const bool ghost = wm && wall, ghost_v = wvx && wall;
     mass_[i] = ghost ? wm[i] : P.m[i];
     rho_[i] = ghost ? wrho[i] : P.rho[i];
+    volume_[i] = mass_[i] / rho_[i];
     ghost_vx_[i] = ghost_v ? wvx[i] : P.vx[i];
     ghost_vy_[i] = ghost_v ? wvy[i] : P.vy[i];
     ghost_vz_[i] = ghost_v ? wvz[i] : P.vz[i];
@@ -244,6 +245,7 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
   const std::size_t n = P.size();
   S_.resize(n);
   R_.resize(n);
+  tension_.assign(n, 0);
   const StressView sv(P);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -257,6 +259,14 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
     const double eps = scene_.soils[mat].artificial_stress;
     R_[i] = {0, 0, 0, 0, 0, 0};
     if (eps <= 0) continue;
+    // no tension if every Gershgorin disc lies below zero (most of a soil body in compression): skip the
+    // eigen-decomposition; the margin keeps a round-off-sized positive eigenvalue on the decomposition's side
+    const double scale = std::abs(s(0, 0)) + std::abs(s(1, 1)) + std::abs(s(2, 2));
+    const double margin = 1e-12 * scale;
+    if (s(0, 0) + std::abs(s(0, 1)) + std::abs(s(0, 2)) < -margin &&
+        s(1, 1) + std::abs(s(0, 1)) + std::abs(s(1, 2)) < -margin &&
+        s(2, 2) + std::abs(s(0, 2)) + std::abs(s(1, 2)) < -margin)
+      continue;
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
     es.computeDirect(s);
     Eigen::Vector3d rp = Eigen::Vector3d::Zero();
@@ -266,6 +276,7 @@ void SoilForces::prepare_pair_terms(Particles& P) const {
     if (!any) continue;
     const Eigen::Matrix3d R = es.eigenvectors() * rp.asDiagonal() * es.eigenvectors().transpose();
     R_[i] = {R(0, 0), R(1, 1), R(2, 2), R(0, 1), R(0, 2), R(1, 2)};
+    tension_[i] = 1;
   }
 }
 
@@ -284,9 +295,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
   const auto* S = S_.data();
   const auto* R = R_.data();
-  // the stress components the acceleration reads: xx yy xy in 2D, all six in 3D
-  constexpr int kComponents[6] = {0, 1, 3, 2, 4, 5};
-  constexpr int nc = Dim == 3 ? 6 : 3;
+  const std::uint8_t* tension = tension_.data();
 #pragma omp parallel
   {
   Neighbors nb;
@@ -301,6 +310,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     const double n_as = mi.artificial_stress_exponent;
     const bool n_is_4 = n_as == 4.0;
     const bool use_as = mi.artificial_stress > 0;
+    const std::uint8_t tension_i = tension[i];
     const auto& Si = S[i];
     const auto& Ri = R[i];
     double ax = 0, ay = 0, az = 0;
@@ -317,13 +327,15 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
       const bool wall = kj == Kind::DummyWall;
       const double mj = mass[j], rhoj = dens[j];
       const auto& Sj = S[j];
-      double T[6];
-      for (int c = 0; c < nc; ++c) T[kComponents[c]] = Si[kComponents[c]] + Sj[kComponents[c]];
-      if (use_as) {
+      // T = S_i + S_j (+ artificial stress) as named scalars, so that they stay in registers
+      double Txx = Si[0] + Sj[0], Tyy = Si[1] + Sj[1], Txy = Si[3] + Sj[3], Tzz = 0, Txz = 0, Tyz = 0;
+      if constexpr (Dim == 3) { Tzz = Si[2] + Sj[2]; Txz = Si[4] + Sj[4]; Tyz = Si[5] + Sj[5]; }
+      if (use_as && (tension_i | tension[j])) {  // R_i + R_j = 0 for a pair with neither in tension
         const double ratio = kernel.W(r) / w_dx;
         const double f = n_is_4 ? (ratio * ratio) * (ratio * ratio) : std::pow(ratio, n_as);
         const auto& Rj = R[j];
-        for (int c = 0; c < nc; ++c) T[kComponents[c]] += f * (Ri[kComponents[c]] + Rj[kComponents[c]]);
+        Txx += f * (Ri[0] + Rj[0]); Tyy += f * (Ri[1] + Rj[1]); Txy += f * (Ri[3] + Rj[3]);
+        if constexpr (Dim == 3) { Tzz += f * (Ri[2] + Rj[2]); Txz += f * (Ri[4] + Rj[4]); Tyz += f * (Ri[5] + Rj[5]); }
       }
       {
         // Monaghan's artificial viscosity for approaching pairs, as a select (the sign of v.r is a coin
@@ -331,21 +343,22 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         const double ux = vxi - gvx[j], uy = vyi - gvy[j];
         const double uz = Dim == 3 ? vzi - gvz[j] : 0.0;
         const double vr = std::min(Dim == 3 ? ux * dx + uy * dy + uz * dz : ux * dx + uy * dy, 0.0);
-        const double mu = h * vr / (r2 + eta2);
+        // Pi = (-alpha c mu + beta mu^2) / rho_ij, mu = h v.r / d, d = r^2 + eta^2, as one division
+        const double d = r2 + eta2, hvr = h * vr;
         const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
-        const double Pi = (-alpha * cij * mu + beta * mu * mu) / (0.5 * (rhoi + rhoj));
-        T[0] -= Pi; T[1] -= Pi;
-        if constexpr (Dim == 3) T[2] -= Pi;
+        const double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        Txx -= Pi; Tyy -= Pi;
+        if constexpr (Dim == 3) Tzz -= Pi;
       }
-      // (T . grad W)_a with T symmetric: components xx yy zz xy xz yz
+      // (T . grad W)_a with T symmetric
       if constexpr (Dim == 3) {
-        ax += mj * (T[0] * gx + T[3] * gy + T[4] * gz);
-        ay += mj * (T[3] * gx + T[1] * gy + T[5] * gz);
-        az += mj * (T[4] * gx + T[5] * gy + T[2] * gz);
+        ax += mj * (Txx * gx + Txy * gy + Txz * gz);
+        ay += mj * (Txy * gx + Tyy * gy + Tyz * gz);
+        az += mj * (Txz * gx + Tyz * gy + Tzz * gz);
       } else {
-        (void)gz;
-        ax += mj * (T[0] * gx + T[3] * gy);
-        ay += mj * (T[3] * gx + T[1] * gy);
+        (void)gz; (void)Tzz; (void)Txz; (void)Tyz;
+        ax += mj * (Txx * gx + Txy * gy);
+        ay += mj * (Txy * gx + Tyy * gy);
       }
     }
     P.ax[i] = ax + g[0] + scene_.body_force[0];

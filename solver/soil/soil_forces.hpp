@@ -79,7 +79,8 @@ class SoilForces {
   // per material: Hooke's law with its own constants, for the elastic mode (models with constant moduli)
   std::vector<std::optional<materials::LinearElastic>> hooke_;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
-  mutable std::vector<double> mass_, rho_, ghost_vx_, ghost_vy_, ghost_vz_;
+  mutable std::vector<std::uint8_t> tension_;  // R_[i] is not zero
+  mutable std::vector<double> mass_, rho_, volume_, ghost_vx_, ghost_vy_, ghost_vz_;  // volume_ = mass_ / rho_
 };
 
 }  // namespace geosph
