@@ -8,7 +8,8 @@
 namespace geosph {
 
 DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
-    : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall()) {}
+    // Morris walls (boundary/morris_wall.hpp) take the dummy pressure, but their velocity per pair
+    : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall() && scene.walls.type != "morris") {}
 
 void DummyWalls::allocate(Particles& P) const {
   if (!no_slip_) return;

@@ -5,6 +5,7 @@
 //   written with particle volumes, so the wall enters with its lattice volume), and for no-slip the velocity
 //   v_w = 2 v_wall - sum_f v_f W_wf / sum_f W_wf,
 // so the wall carries the hydrostatic pressure right up to its surface (no particle deficiency).
+// Morris walls (walls.type "morris", boundary/morris_wall.hpp) take p and rho from here and no v_w.
 #pragma once
 #include <array>
 

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "boundary/body_fields.hpp"
+#include "boundary/morris_wall.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
@@ -20,6 +21,15 @@ int wall_layers(const Scene& s) {
 }
 
 namespace {
+
+// A Morris wall particle's depth behind the wall surface and the unit normal towards the fluid
+// (boundary/morris_wall.hpp), on the particle just added.
+void set_morris_geometry(Particles& P, double depth, const double n[3]) {
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  P.add_field(MorrisWallFields::depth, MorrisWallFields::owner).back() = depth;
+  const char* names[3] = {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz};
+  for (int a = 0; a < 3; ++a) P.add_field(names[a], BodyFields::owner).back() = len > 0 ? n[a] / len : 0.0;
+}
 
 // Lattice points lo + (i + 1/2) dx covering [lo, hi) on every axis.
 template <class F>
@@ -171,6 +181,7 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
 
   const int L = wall_layers(s);
   const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
+  const bool morris = s.walls.type == "morris";
   const double rho0 = s.has_fluid() ? s.materials.front().density : s.soils.front().density;
   for (const auto& c : s.walls.containers) {
     auto is_open = [&](const char* side) { return std::find(c.open.begin(), c.open.end(), side) != c.open.end(); };
@@ -180,7 +191,10 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
       if (!is_open(container_side(s.dim, a, false))) lo[a] -= L * s.dx;
       if (!is_open(container_side(s.dim, a, true))) hi[a] += L * s.dx;
     }
-    // Repulsive walls (Monaghan 1994) are a single line of particles on the wall surface.
+    // Repulsive walls (Monaghan 1994) are a single line of particles, the first lattice layer outside the
+    // faces: dx from the fluid's first row, the force's range r0, so that the fluid starts at rest. (On
+    // the faces themselves, dx/2 from the fluid, the first row started deep inside the range and a corner
+    // particle left at 5 c0 in the first step.)
     const int layers = wall == Kind::RepulsiveWall ? 1 : L;
     lattice(s.dim, lo, hi, s.dx, [&](double x, double y, double z) {
       const double q[3] = {x, y, z};
@@ -194,17 +208,19 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
         }
       }
       if (outside_axes == 0 || !in_layers) return;
-      double px = x, py = y, pz = z;
-      if (wall == Kind::RepulsiveWall) {  // put the single line on the wall surface itself
-        double* pq[3] = {&px, &py, &pz};
-        for (int a = 0; a < s.dim; ++a) {
-          if (q[a] < c.lo[a]) *pq[a] = c.lo[a];
-          if (q[a] > c.hi[a]) *pq[a] = c.hi[a];
-        }
-      }
-      P.add(px, py, pz, rho0 * vol, rho0, wall, 0);
+      P.add(x, y, z, rho0 * vol, rho0, wall, 0);
       if (s.mixed_wall_slip())
         P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = c.slip == "free_slip" ? 1 : 0;
+      // Morris walls: the depth behind the nearest point of the container's inner box, and the
+      // direction to it (a corner particle's diagonal)
+      if (morris) {
+        double n[3] = {0, 0, 0}, d2 = 0;
+        for (int a = 0; a < s.dim; ++a) {
+          n[a] = std::clamp(q[a], c.lo[a], c.hi[a]) - q[a];
+          d2 += n[a] * n[a];
+        }
+        set_morris_geometry(P, std::sqrt(d2), n);
+      }
     });
   }
   // Solid blocks of wall particles (a clamp, an obstacle) on the same lattice.
@@ -219,6 +235,20 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
         P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = s.walls.slip == "free_slip" ? 1 : 0;
       P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
+      // Morris walls: the depth below the block's nearest face and that face's outward normal
+      if (morris) {
+        const double q[3] = {x, y, z};
+        double depth = INFINITY, n[3] = {0, 0, 0};
+        int axis = 0;
+        double sign = 0;
+        for (int a = 0; a < s.dim; ++a)
+          for (const double side : {-1.0, 1.0}) {
+            const double d = side < 0 ? q[a] - b.lo[a] : b.hi[a] - q[a];
+            if (d < depth) { depth = d; axis = a; sign = side; }
+          }
+        n[axis] = sign;
+        set_morris_geometry(P, depth, n);
+      }
     });
   }
   // Walls of any shape: the lattice points of the solid within the wall layers of its surface, each with
@@ -269,9 +299,11 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
     for (const char* f : {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz}) P.add_field(f, BodyFields::owner);
     double* n[3] = {P.field(BodyFields::wall_nx).data(), P.field(BodyFields::wall_ny).data(),
                     P.field(BodyFields::wall_nz).data()};
+    double* depth = morris ? P.add_field(MorrisWallFields::depth, MorrisWallFields::owner).data() : nullptr;
     for (std::size_t i = first; i < P.size(); ++i) {
       const geometry::Point nrm = geometry::outward_normal(*b.shape, {P.x[i], P.y[i], P.z[i]}, 1e-3 * s.dx);
       for (int a = 0; a < 3; ++a) n[a][i] = nrm[a];
+      if (depth) depth[i] = std::max(0.0, -b.shape->distance({P.x[i], P.y[i], P.z[i]}));
     }
   }
   return P;

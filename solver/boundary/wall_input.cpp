@@ -5,6 +5,11 @@
 
 namespace geosph {
 
+const std::vector<std::string>& wall_types() {
+  static const std::vector<std::string> types = {"dummy", "repulsive", "morris"};
+  return types;
+}
+
 namespace {
 
 const std::vector<std::string> kSides = {"left", "right", "bottom", "top", "front", "back"};
@@ -21,13 +26,16 @@ ContainerSpec parse_box(const JsonFields& f, int dim) {
 
 const bool documented = register_section(
     {"walls", "walls", "Wall particles: one treatment for all walls, containers and blocks.",
-     {choice_doc("type", {"dummy", "repulsive"}, "required",
-                 "dummy particles with extrapolated pressure/stress (Adami et al. 2012) or repulsive particles "
-                 "(Monaghan 1994, fluids only)"),
+     {choice_doc("type", wall_types(), "required",
+                 "dummy particles with extrapolated pressure/stress (Adami et al. 2012), repulsive particles "
+                 "(Monaghan 1994, fluids only), or Morris no-slip walls (Morris, Fox & Zhu 1997, fluids only: dummy "
+                 "pressure, the wall velocity extrapolated per pair across the wall's tangent plane; no free slip)"),
       choice_doc("slip", {"no_slip", "free_slip"}, "no_slip", "wall condition of every wall (a container may set its own)"),
       {"layers", FieldType::Integer, "in [1, 10]", "enough to cover the kernel support", "-", "wall particle layers",
        Range::between(1, 10)},
       number_doc("repulsive_strength", Range::non_negative(), "0.05 c0^2", "m^2/s^2", "repulsive walls: D"),
+      number_doc("morris_beta_max", Range::between(1, 1000), "1.5", "-",
+                 "Morris walls: cap of the pair's velocity factor beta = 1 + d_wall/d_fluid (1.5: Morris et al. 1997)"),
       {"containers", FieldType::Objects, "see walls.containers", "required without blocks or boundaries", "-",
        "boxes walled on their faces"},
       {"blocks", FieldType::Objects, "see walls.blocks", "none", "-", "solid boxes of wall particles"},
@@ -62,10 +70,12 @@ const bool documented_blocks = register_section(
 WallSpec parse_walls(const JsonFields& w, int dim) {
   w.section("walls");
   WallSpec walls;
-  walls.type = w.choice("type", {"dummy", "repulsive"});
+  walls.type = w.choice("type", wall_types());
   walls.slip = w.choice("slip", {"no_slip", "free_slip"}, "no_slip");
   walls.layers = static_cast<int>(w.integer("layers", 1, 10, 0));
   walls.repulsive_strength = w.number("repulsive_strength", Range::non_negative(), 0.0);
+  walls.morris_beta_max = w.number("morris_beta_max", Range::between(1, 1000), 1.5);
+  if (w.has("morris_beta_max") && walls.type != "morris") w.fail("morris_beta_max", "applies to walls.type \"morris\" only");
   if (!w.has("containers") && !w.has("blocks") && !w.has("boundaries"))
     w.fail("containers", "is missing: walls need 'containers', 'blocks' or 'boundaries'");
   if (w.has("containers"))

@@ -8,4 +8,7 @@ namespace geosph {
 
 WallSpec parse_walls(const JsonFields& w, int dim);
 
+// The wall treatments walls.type accepts.
+const std::vector<std::string>& wall_types();
+
 }  // namespace geosph

@@ -2,6 +2,7 @@
 
 #include "boundary/body_fields.hpp"
 #include "boundary/dummy_wall.hpp"
+#include "boundary/morris_wall.hpp"
 #include "coupling/seepage_fields.hpp"
 
 #include <Eigen/Dense>
@@ -14,8 +15,10 @@ namespace geosph {
 FluidForces::FluidForces(const Scene& scene) : scene_(scene), mats_(scene.materials) {
   for (const auto& m : mats_) eos_.emplace_back(m);
   free_slip_walls_ = scene.walls.slip == "free_slip";
+  morris_walls_ = scene.walls.type == "morris";
   const double c0 = max_sound_speed();
   repulsive_D_ = scene.walls.repulsive_strength > 0 ? scene.walls.repulsive_strength : 0.05 * c0 * c0;
+  // r0: the fluid's initial distance from the wall line (Monaghan 1994), dx (boundary/geometry.cpp)
   repulsive_r0_ = scene.dx;
 }
 
@@ -52,8 +55,9 @@ void FluidForces::rates(Particles& P, const CellList& cells, const std::array<do
   const bool mixed = P.find_int(BodyFields::wall_free_slip) != nullptr;
   const bool porous = porosity(P) != nullptr;
   const auto run = [&]<int Dim>(const auto& k) {
-    if (mixed) porous ? rates_with<Dim, true, true>(k, P, cells, g) : rates_with<Dim, true, false>(k, P, cells, g);
-    else porous ? rates_with<Dim, false, true>(k, P, cells, g) : rates_with<Dim, false, false>(k, P, cells, g);
+    if (morris_walls_) rates_with<Dim, false, false, true>(k, P, cells, g);  // no-slip, fluid-only scenes
+    else if (mixed) porous ? rates_with<Dim, true, true, false>(k, P, cells, g) : rates_with<Dim, true, false, false>(k, P, cells, g);
+    else porous ? rates_with<Dim, false, true, false>(k, P, cells, g) : rates_with<Dim, false, false, false>(k, P, cells, g);
   };
   std::visit([&](const auto& k) {
     if (scene_.dim == 2) run.template operator()<2>(k);
@@ -117,7 +121,7 @@ void FluidForces::density_gradients(const K& kernel, const Particles& P, const C
 
 // Continuity, delta-SPH and momentum in one neighbour pass: each fluid particle gathers its own sums
 // (no scatter, so the result does not depend on the thread count).
-template <int Dim, bool MixedSlip, bool Porous, class K>
+template <int Dim, bool MixedSlip, bool Porous, bool Morris, class K>
 void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   const std::size_t n = P.size();
   const double h = scene_.h(), eta2 = 0.01 * h * h;
@@ -130,6 +134,12 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
   const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
   const double* wvy = P.find(DummyWallFields::vy);
   const double* wvz = P.find(DummyWallFields::vz);
+  // Morris walls: each wall particle's depth behind the surface and the surface normal into the fluid
+  const double* mdepth = Morris ? P.find(MorrisWallFields::depth) : nullptr;
+  const double* mnx = Morris ? P.find(BodyFields::wall_nx) : nullptr;
+  const double* mny = Morris ? P.find(BodyFields::wall_ny) : nullptr;
+  const double* mnz = Morris ? P.find(BodyFields::wall_nz) : nullptr;
+  const double beta_max = scene_.walls.morris_beta_max;
   const double D = repulsive_D_, r0 = repulsive_r0_;
   const auto bf = scene_.body_force;
   // p/rho^2 and m/rho once per particle (fluid and extrapolated walls) instead of once per pair
@@ -223,9 +233,19 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
       double coef = Porous ? ni * mj * (pi + p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
       // free slip: no viscous interaction with the wall (Adami et al. 2012)
       const bool viscous = !(wall && (MixedSlip ? slip[j] != 0 : free_slip));
-      const bool ghost_v = wall && wvx;  // no-slip walls: the extrapolated velocity
-      const double wx = ghost_v ? vxi - wvx[j] : ux, wy = ghost_v ? vyi - wvy[j] : uy;
-      const double wz = Dim == 3 && ghost_v ? vzi - wvz[j] : uz;
+      double wx, wy, wz;
+      if constexpr (Morris) {
+        // v_ij = beta (v_i - v_wall), beta = min(beta_max, 1 + d_b / d_i) with d_i the fluid particle's
+        // distance to the wall particle's tangent plane (Morris, Fox & Zhu 1997)
+        const double beta =
+            wall ? morris_velocity_factor(dot(mnx[j], mny[j], mnz[j], dx, dy, dz) - mdepth[j], mdepth[j], beta_max)
+                 : 1.0;
+        wx = beta * ux; wy = beta * uy; wz = beta * uz;
+      } else {
+        const bool ghost_v = wall && wvx;  // no-slip walls: the extrapolated velocity
+        wx = ghost_v ? vxi - wvx[j] : ux; wy = ghost_v ? vyi - wvy[j] : uy;
+        wz = Dim == 3 && ghost_v ? vzi - wvz[j] : uz;
+      }
       const double vr = std::min(dot(wx, wy, wz, dx, dy, dz), 0.0);  // approaching pairs only
       // m_j Pi_ij, Pi_ij = -alpha c0 h v_ij.r_ij / ((r^2 + eta^2) rho_ij)
       const double av = -mj * av_i * vr * inv_r2 * 2.0 / (rhoi + rhoj);

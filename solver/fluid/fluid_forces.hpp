@@ -11,7 +11,8 @@
 // Pore water (two-phase scenes, coupling/seepage.hpp): rho is the partial density n rho_w, p follows
 // rho/n, and the pressure term is multiplied by n_i (-n grad p / (n rho_w)).
 // with eta^2 = 0.01 h^2 (1e-4 h^2 in the laminar term, see fluid_forces.cpp). Dummy wall particles enter with the pressure, density and (no-slip)
-// velocity extrapolated by DummyWalls (Adami, Hu & Adams 2012).
+// velocity extrapolated by DummyWalls (Adami, Hu & Adams 2012); Morris walls with the dummy pressure and
+// the relative velocity beta (v_i - v_wall) in the viscous terms (Morris, Fox & Zhu 1997, boundary/morris_wall.hpp).
 #pragma once
 #include <vector>
 
@@ -41,7 +42,8 @@ class FluidForces {
   double max_kinematic_viscosity() const;
 
  private:
-  template <int Dim, bool MixedSlip, bool Porous, class K>
+  // Morris: Morris no-slip walls (boundary/morris_wall.hpp), never mixed slip or porous
+  template <int Dim, bool MixedSlip, bool Porous, bool Morris, class K>
   void rates_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   void correct_density(Particles& P, double dt_predicted) const;
 
@@ -56,7 +58,7 @@ class FluidForces {
   const Scene& scene_;
   std::vector<TaitEos> eos_;
   std::vector<FluidMaterial> mats_;
-  bool free_slip_walls_;
+  bool free_slip_walls_, morris_walls_;
   double repulsive_D_, repulsive_r0_;
   mutable std::vector<double> pressure_over_rho2_, volume_, drho_new_;  // scratch, per particle
 };

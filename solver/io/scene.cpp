@@ -490,7 +490,17 @@ void validate_scene(const Scene& s) {
   validate_two_phase(s);
   validate_overlaps(s);
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy")
-    fail("walls.type", "soil needs dummy walls (they carry the soil's stress); repulsive walls are for fluids only");
+    fail("walls.type", "soil needs dummy walls (they carry the soil's stress); \"" + s.walls.type +
+                           "\" walls are for fluids only");
+  if (s.walls.type == "morris") {  // Morris et al.'s (1997) treatment is a no-slip condition
+    const char* why = "is \"free_slip\", but Morris walls (walls.type \"morris\") are no-slip walls; use walls.type "
+                      "\"dummy\" for free slip";
+    if (s.walls.slip == "free_slip") fail("walls.slip", why);
+    for (std::size_t k = 0; k < s.walls.containers.size(); ++k)
+      if (s.walls.containers[k].slip == "free_slip") fail("walls.containers[" + std::to_string(k) + "].slip", why);
+    for (std::size_t k = 0; k < s.walls.boundaries.size(); ++k)
+      if (s.walls.boundaries[k].slip == "free_slip") fail("walls.boundaries[" + std::to_string(k) + "].slip", why);
+  }
 }
 
 Scene load_scene(const std::filesystem::path& path) {
