@@ -13,7 +13,7 @@ REPORT="${REPORT:-$ROOT/report}"
 bash "$ROOT/ci/build.sh"
 rm -rf "$RESULTS"
 status=0
-"$BUILD_DIR/solver/geosph" verify --level "$LEVEL" --out "$RESULTS" || status=$?
+"$BUILD_DIR/solver/geosph" verify --level "$LEVEL" --walls all --out "$RESULTS" || status=$?
 PYTHON=/usr/bin/python3
 [ -x "$PYTHON" ] || PYTHON=python3
 "$PYTHON" "$ROOT/reports/generate_report.py" "$RESULTS" --out "$REPORT"

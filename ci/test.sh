@@ -6,6 +6,9 @@
 #   ctest --test-dir build -L convergence
 # The soak test (10^6 steps: constant memory, readable output at every moment) has the label `soak`:
 #   ctest --test-dir build -L soak
+# The boundary comparison (each case with every other wall treatment its case.json lists) has the
+# label `walls`:
+#   ctest --test-dir build -L walls
 # Catalogue cases that fail today, each tracked by an open issue, carry the label `open` (in their
 # case.json "labels"; listed in the README); the main job (ci/run-catalogue.sh) still runs them
 # and the report marks them failing. Run them with
@@ -14,4 +17,4 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 bash "$ROOT/ci/build.sh"
-ctest --test-dir "$BUILD_DIR" -LE 'convergence|open|soak' --output-on-failure
+ctest --test-dir "$BUILD_DIR" -LE 'convergence|open|soak|walls' --output-on-failure

@@ -1,7 +1,7 @@
 // The `geosph` command:
 //   geosph run SCENE.json --out DIR      simulate a scene, HDF5 + XDMF output, checkpoints
 //   geosph run SCENE.json --out DIR --restart DIR|CHECKPOINT   continue an interrupted run
-//   geosph verify [--case NAME] [--level quick|full] --out DIR   run catalogue cases, write result records
+//   geosph verify [--case NAME] [--level quick|full] [--walls T|all] --out DIR   run catalogue cases, write result records
 //   geosph info                          version, threads, catalogue
 //   geosph scene-reference [--format markdown|json-schema]   the scene format (docs/scene-reference.md)
 //   geosph stages SCENE.json             the time step's stages for that scene (sim/stages.hpp)
@@ -18,6 +18,7 @@
 #include <iostream>
 
 #include "analysis/strength_reduction.hpp"
+#include "boundary/wall_input.hpp"
 #include "harness/catalogue.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/json_fields.hpp"
@@ -236,8 +237,30 @@ int cmd_ssr(const std::string& scene_file, const std::string& out_dir, const Str
   return 0;
 }
 
+// The wall treatments a case runs with under --walls: "" is the scene's own; "all" adds every other
+// treatment its case.json "wall_treatments" lists (the boundary comparison); a single treatment runs
+// the cases that list it.
+std::vector<std::string> wall_runs(const verify::CaseEntry& c, const std::string& walls, bool named) {
+  if (walls.empty()) return {""};
+  const auto& listed = c.wall_treatments;
+  if (walls == "all") {
+    std::vector<std::string> runs = {""};
+    for (const auto& t : listed)
+      if (t != c.own_walls) runs.push_back(t);
+    return runs;
+  }
+  if (std::find(listed.begin(), listed.end(), walls) == listed.end()) {
+    if (!named) return {};
+    std::string all;
+    for (const auto& t : listed) all += (all.empty() ? "" : ", ") + t;
+    throw InputError("--walls " + walls + ": case '" + c.name + "' is not compared with " + walls +
+                     " walls (its case.json wall_treatments: " + (all.empty() ? "none" : all) + ")");
+  }
+  return {walls == c.own_walls ? "" : walls};
+}
+
 int cmd_verify(const std::vector<std::string>& names, const std::string& level, const std::string& out_dir,
-               bool progress) {
+               bool progress, const std::string& walls) {
   verify::CaseContext ctx;
   ctx.data_dir = verify::default_data_dir();
   ctx.level = level;
@@ -265,12 +288,16 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
   }
   fs::create_directories(out_dir);
   int failed = 0, passed = 0, studies = 0;
-  for (const auto* c : todo) {
-    std::fprintf(stderr, "== %s (%s)\n", c->name.c_str(), level.c_str());
+  for (const auto* c : todo)
+    for (const auto& treatment : wall_runs(*c, walls, !names.empty())) {
+    ctx.walls = treatment;
+    std::fprintf(stderr, "== %s (%s%s)\n", c->name.c_str(), level.c_str(),
+                 treatment.empty() ? "" : (", " + treatment + " walls").c_str());
     const auto records = verify::run_case(*c, ctx);
     for (std::size_t k = 0; k < records.size(); ++k) {
       const auto& r = records[k];
-      std::string file = c->name + "__" + level + (records.size() > 1 ? "__" + std::to_string(k) : "") + ".json";
+      std::string file = c->name + "__" + level + (treatment.empty() ? "" : "__walls-" + treatment) +
+                         (records.size() > 1 ? "__" + std::to_string(k) : "") + ".json";
       const auto tmp = fs::path(out_dir) / (file + ".tmp");
       std::ofstream(tmp) << r.to_json().dump(1) << "\n";
       fs::rename(tmp, fs::path(out_dir) / file);
@@ -283,7 +310,7 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
       if (!r.scored) ++studies;
       else (r.passed() ? passed : failed)++;
     }
-  }
+    }
   std::printf("verify: %d passed, %d failed, %d unscored studies\n", passed, failed, studies);
   return failed == 0 ? 0 : 1;
 }
@@ -327,6 +354,13 @@ int main(int argc, char** argv) {
   ver->add_option("--level", level, "resolution level")->check(CLI::IsMember({"quick", "full", "convergence"}));
   ver->add_option("--out", vout, "directory for the result records")->required();
   ver->add_flag("--progress", vprogress, "show progress of each run");
+  std::string vwalls;
+  std::vector<std::string> wall_choices = wall_types();
+  wall_choices.push_back("all");
+  ver->add_option("--walls", vwalls,
+                  "run the cases with this wall treatment instead of their own (those whose case.json lists it in "
+                  "wall_treatments), or 'all': each case with its own and every treatment it lists")
+      ->check(CLI::IsMember(wall_choices));
 
   auto* ssr = app.add_subcommand("ssr", "slope stability: factor of safety by shear strength reduction");
   std::string ssr_scene, ssr_out;
@@ -356,7 +390,7 @@ int main(int argc, char** argv) {
   if (threads > 0) omp_set_num_threads(threads);
   try {
     if (*run) return cmd_run(ro);
-    if (*ver) return cmd_verify(cases, level, vout, vprogress);
+    if (*ver) return cmd_verify(cases, level, vout, vprogress, vwalls);
     if (*ssr) return cmd_ssr(ssr_scene, ssr_out, so, ssr_snapshots);
     if (*ref) {
       if (ref_format == "markdown") std::printf("%s", scene_reference_markdown().c_str());

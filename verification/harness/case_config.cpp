@@ -38,6 +38,11 @@ CaseConfig load_case(const CaseContext& ctx, const std::string& name) {
   c.spec = j;
   // element (material-point) tests have no scene
   if (std::filesystem::exists(c.dir / "scene.json")) c.scene_json = read_json_file(c.dir / "scene.json");
+  if (!ctx.walls.empty()) {
+    if (!c.scene_json.is_object() || !c.scene_json.contains("walls"))
+      throw InputError(file + ": --walls " + ctx.walls + ": the case's scene has no walls to replace");
+    c.scene_json["walls"]["type"] = ctx.walls;
+  }
   return c;
 }
 

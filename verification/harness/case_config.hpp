@@ -23,6 +23,9 @@ struct CaseContext {
   std::string level = "quick";
   int threads = 1;
   bool progress = false;
+  // a wall treatment that replaces the scene's walls.type (the boundary comparison, case.json
+  // "wall_treatments"); empty: the scene's own
+  std::string walls;
 };
 
 struct CaseConfig {
