@@ -7,11 +7,12 @@ from string import Template
 
 from . import figures
 from .convergence import studies
-from .records import cheapest_passing, group_by, representative, stability_records
+from .records import cheapest_passing, group_by, representative, stability_records, step_cost, wall_comparisons
 
 TEMPLATE = Path(__file__).resolve().parent.parent / "templates" / "page.html"
 SECTIONS = (("summary", "Summary"), ("cases", "Cases"), ("convergence", "Convergence studies"),
-            ("speed", "Speed against error"), ("stability", "Stability of hard cases"))
+            ("speed", "Speed against error"), ("stability", "Stability of hard cases"),
+            ("boundaries", "Wall treatments compared"))
 
 
 def fmt(v, spec=".4g"):
@@ -177,13 +178,56 @@ def stability_section(records):
                   "failure message"], rows, classes)
 
 
+def boundaries_section(records):
+    """Per case run with several wall treatments (case.json wall_treatments): error, cost and stability
+    of each, and the cheapest treatment meeting the case's tolerance at each level and spacing."""
+    cases = wall_comparisons(records)
+    if not cases:
+        return ('<p class="muted">No case was run with more than one wall treatment '
+                "(<code>geosph verify --walls all</code>).</p>")
+    parts = []
+    for case, recs in cases.items():
+        parts.append(f"<h3>{escape(case)}</h3>")
+        rows, classes = [], []
+        for r in sorted(recs, key=lambda r: (r.level, -r.dx, r.wall_treatment)):
+            cost = step_cost(r)
+            for m in r.metrics:
+                ok = m["passed"] and r.stable
+                rows.append([escape(r.wall_treatment), escape(r.level), (fmt(r.dx), "num"), escape(m["name"]),
+                             (fmt(m["value"]), "num"), (fmt(m["tolerance"]), "num"), _status(ok, not r.stable),
+                             ("yes" if r.stable else "NO", "status"), (fmt(r.wall_particles, "d"), "num"),
+                             (fmt(r.particles, "d"), "num"), (fmt(r.steps, "d"), "num"),
+                             (fmt(None if cost is None else 1e3 * cost, ".3g"), "num")])
+                classes.append("pass" if ok else "fail")
+        parts.append(table(["walls", "level", "dx", "metric", "value", "tolerance", "status", "stable",
+                            "wall particles", "moving particles", "steps", "wall time per step [ms]"],
+                           rows, classes))
+        verdicts = []
+        for (level, dx), group in group_by(recs, lambda r: (r.level, r.dx)).items():
+            ok = [r for r in group if r.passed and step_cost(r) is not None]
+            if ok:
+                best = min(ok, key=step_cost)
+                verdicts.append(f"<li>{escape(level)}, dx = {fmt(dx)}: <b>{escape(best.wall_treatment)}</b> "
+                                f"({1e3 * step_cost(best):.3g} ms per step; passing: "
+                                f"{escape(', '.join(sorted(r.wall_treatment for r in ok)))})</li>")
+            else:
+                verdicts.append(f'<li>{escape(level)}, dx = {fmt(dx)}: <span class="fail">no treatment meets '
+                                "the tolerance</span></li>")
+        parts.append(f"<p>Cheapest treatment meeting the tolerance:</p><ul>{''.join(verdicts)}</ul>")
+        known = {r.wall_treatment: r.wall_treatment_open for r in recs if r.wall_treatment_open}
+        if known:
+            items = "".join(f"<li><b>{escape(t)}</b>: {escape(why)}</li>" for t, why in sorted(known.items()))
+            parts.append(f"<p>Known to miss the tolerance (case.json open_wall_treatments):</p><ul>{items}</ul>")
+    return "\n".join(parts)
+
+
 def write_report(records, out_dir, source=""):
     """Write out_dir/index.html and its PNG figures; return the index path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     bodies = {"summary": summary_section(records), "cases": cases_section(records, out),
               "convergence": convergence_section(records, out), "speed": speed_section(records, out),
-              "stability": stability_section(records)}
+              "stability": stability_section(records), "boundaries": boundaries_section(records)}
     body = "\n".join(f'<section id="{sid}">\n<h2>{escape(title)}</h2>\n{bodies[sid]}\n</section>'
                      for sid, title in SECTIONS)
     n_fail = sum(not r.passed for r in records)

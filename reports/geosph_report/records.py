@@ -46,6 +46,10 @@ class Record:
     relpath: str = None  # path relative to the results directory, for display
     scored: bool = True  # False: a study run (e.g. a stabilisation switched off), reported, not judged
     provenance: dict = None  # solver_version, compiler, build_flags, threads, scene_hash
+    wall_treatment: str = None  # the scene's walls.type (dummy, repulsive, morris), if it has walls
+    wall_particles: int = None
+    wall_comparison: bool = False  # run with a treatment other than the scene's own (geosph verify --walls)
+    wall_treatment_open: str = None  # why that treatment misses the tolerance today (case.json open_wall_treatments)
 
     @property
     def passed(self):
@@ -178,6 +182,10 @@ def parse_record(obj, path="<record>"):
         snapshot=_snapshot(c, c.get(obj, "snapshot", "object", required=False)),
         scored=c.get(obj, "scored", "boolean", required=False) is not False,
         provenance=c.get(obj, "provenance", "object", required=False),
+        wall_treatment=c.get(obj, "wall_treatment", "string", required=False),
+        wall_particles=c.get(res, "wall_particles", "integer", "resolution.", required=False),
+        wall_comparison=c.get(obj, "wall_comparison", "boolean", required=False) is True,
+        wall_treatment_open=c.get(obj, "wall_treatment_open", "string", required=False),
     )
     if rec.level not in LEVELS:
         c.fail(f"field 'level' must be one of {', '.join(LEVELS)}, got {rec.level!r}")
@@ -233,7 +241,23 @@ def cheapest_passing(recs):
 
 
 def stability_records(records):
-    """Hard cases: records using a stabilisation option, or of a case with several variants."""
-    variants = {case: {r.variant for r in rs} for case, rs in group_by(records, lambda r: r.case).items()}
-    return [r for r in records
+    """Hard cases: records using a stabilisation option, or of a case with several variants (the
+    boundary comparison's runs with another wall treatment have their own section)."""
+    own = [r for r in records if not r.wall_comparison]
+    variants = {case: {r.variant for r in rs} for case, rs in group_by(own, lambda r: r.case).items()}
+    return [r for r in own
             if STABILISATION_KEYS & set(r.options) or len(variants[r.case]) > 1]
+
+
+def wall_comparisons(records):
+    """{case: records} for the cases whose records use two or more wall treatments."""
+    out = {}
+    for case, recs in group_by([r for r in records if r.wall_treatment], lambda r: r.case).items():
+        if len({r.wall_treatment for r in recs}) > 1:
+            out[case] = recs
+    return out
+
+
+def step_cost(r):
+    """Wall time per step [s], or None without steps."""
+    return r.wall_s / r.steps if r.steps > 0 else None

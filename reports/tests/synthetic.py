@@ -110,6 +110,25 @@ def hydrostatic():
         for dx in (0.02, 0.01)}
 
 
+def wall_treatments():
+    """One case run with three wall treatments (the boundary comparison); morris fails its tolerance."""
+    out = {}
+    for walls, err, wall_s, n_wall in (("dummy", 0.012, 30.0, 900), ("repulsive", 0.018, 20.0, 300),
+                                       ("morris", 0.03, 31.0, 900)):
+        rec = base("tank_2d", 0.01, wall_treatment=walls, variant=None if walls == "dummy" else f"walls={walls}",
+                   metrics=_metric("pressure_rel_l2", err, 0.02, "synthetic"))
+        rec["resolution"]["wall_particles"] = n_wall
+        rec["steps"], rec["wall_s"] = 1000, wall_s
+        if rec["variant"] is None:
+            del rec["variant"]
+        else:
+            rec["wall_comparison"] = True
+        if walls == "morris":
+            rec["wall_treatment_open"] = "synthetic reason: capped wall velocity"
+        out[f"tank/{walls}.json"] = rec
+    return out
+
+
 def all_records():
     """{relative path: record dict} for every synthetic case."""
     out = {}

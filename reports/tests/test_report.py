@@ -14,7 +14,7 @@ import unittest
 from pathlib import Path
 
 from geosph_report import convergence, records
-from geosph_report.html import SECTIONS, write_report
+from geosph_report.html import SECTIONS, boundaries_section, write_report
 
 from . import synthetic
 
@@ -81,6 +81,29 @@ class ReportTest(unittest.TestCase):
         self.assertIn("5120", stab)
         self.assertIn("delta_off", stab)
         self.assertNotIn("poiseuille", stab)
+
+
+class BoundaryComparisonTest(unittest.TestCase):
+
+    def test_treatments_side_by_side_and_cheapest_named(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            synthetic.write(Path(tmp) / "results", synthetic.wall_treatments())
+            recs = records.load_records(Path(tmp) / "results")
+            html = write_report(recs, Path(tmp) / "report").read_text()
+        sec = html.split('<section id="boundaries">')[1].split("</section>")[0]
+        rows = re.findall(r"<tr( class=\"(\w+)\")?>(.*?)</tr>", sec)
+        self.assertEqual(len(rows), 4)  # header + one per treatment
+        self.assertEqual([r[1] for r in rows[1:]], ["pass", "fail", "pass"])  # dummy, morris, repulsive
+        self.assertIn(">300<", rows[3][2])  # repulsive: its wall particles
+        self.assertIn(">20<", rows[3][2])   # and 20 s / 1000 steps = 20 ms per step
+        self.assertIn("<b>repulsive</b> (20 ms per step; passing: dummy, repulsive)", sec)
+        self.assertIn("<b>morris</b>: synthetic reason: capped wall velocity", sec)
+        stab = html.split('<section id="stability">')[1].split("</section>")[0]
+        self.assertNotIn("walls=", stab)  # the comparison runs are not stability variants
+
+    def test_no_comparison_without_several_treatments(self):
+        recs = [records.parse_record(r, p) for p, r in synthetic.all_records().items()]
+        self.assertIn("No case was run with more than one wall treatment", boundaries_section(recs))
 
 
 class ConvergenceTest(unittest.TestCase):
