@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "boundary/body_fields.hpp"
+#include "boundary/ghost_wall.hpp"
 #include "coupling/seepage_fields.hpp"
 
 namespace geosph {
@@ -17,6 +18,12 @@ void DummyWalls::allocate(Particles& P) const {
 }
 
 void DummyWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
+  if (scene_.walls.type == "ghost") {  // the same wall fields, from the fluid at each mirror point
+    update_ghost_walls(scene_, fluid_.eos(), P, cells, g, no_slip_ ? P.field(DummyWallFields::vx).data() : nullptr,
+                       no_slip_ ? P.field(DummyWallFields::vy).data() : nullptr,
+                       no_slip_ ? P.field(DummyWallFields::vz).data() : nullptr);
+    return;
+  }
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();

@@ -6,6 +6,7 @@
 //   v_w = 2 v_wall - sum_f v_f W_wf / sum_f W_wf,
 // so the wall carries the hydrostatic pressure right up to its surface (no particle deficiency).
 // Morris walls (walls.type "morris", boundary/morris_wall.hpp) take p and rho from here and no v_w.
+// Ghost walls (walls.type "ghost", boundary/ghost_wall.hpp) fill the same fields from their mirror points.
 #pragma once
 #include <array>
 

@@ -8,7 +8,7 @@
 #include <map>
 
 #include "boundary/body_fields.hpp"
-#include "boundary/morris_wall.hpp"
+#include "boundary/wall_surface.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "core/time_step.hpp"
 #include "fluid/equation_of_state.hpp"
@@ -22,11 +22,11 @@ int wall_layers(const Scene& s) {
 
 namespace {
 
-// A Morris wall particle's depth behind the wall surface and the unit normal towards the fluid
-// (boundary/morris_wall.hpp), on the particle just added.
-void set_morris_geometry(Particles& P, double depth, const double n[3]) {
+// A wall particle's depth behind the wall surface and the unit normal towards the fluid
+// (boundary/wall_surface.hpp), on the particle just added.
+void set_surface_geometry(Particles& P, double depth, const double n[3]) {
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  P.add_field(MorrisWallFields::depth, MorrisWallFields::owner).back() = depth;
+  P.add_field(WallSurfaceFields::depth, WallSurfaceFields::owner).back() = depth;
   const char* names[3] = {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz};
   for (int a = 0; a < 3; ++a) P.add_field(names[a], BodyFields::owner).back() = len > 0 ? n[a] / len : 0.0;
 }
@@ -181,7 +181,8 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
 
   const int L = wall_layers(s);
   const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
-  const bool morris = s.walls.type == "morris";
+  // Morris and ghost walls need each wall particle's place relative to the surface
+  const bool surface = s.walls.type == "morris" || s.walls.type == "ghost";
   const double rho0 = s.has_fluid() ? s.materials.front().density : s.soils.front().density;
   for (const auto& c : s.walls.containers) {
     auto is_open = [&](const char* side) { return std::find(c.open.begin(), c.open.end(), side) != c.open.end(); };
@@ -211,15 +212,15 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
       if (s.mixed_wall_slip())
         P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = c.slip == "free_slip" ? 1 : 0;
-      // Morris walls: the depth behind the nearest point of the container's inner box, and the
-      // direction to it (a corner particle's diagonal)
-      if (morris) {
+      // the depth behind the nearest point of the container's inner box, and the direction to it (a
+      // corner particle's diagonal)
+      if (surface) {
         double n[3] = {0, 0, 0}, d2 = 0;
         for (int a = 0; a < s.dim; ++a) {
           n[a] = std::clamp(q[a], c.lo[a], c.hi[a]) - q[a];
           d2 += n[a] * n[a];
         }
-        set_morris_geometry(P, std::sqrt(d2), n);
+        set_surface_geometry(P, std::sqrt(d2), n);
       }
     });
   }
@@ -235,8 +236,8 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
         P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = s.walls.slip == "free_slip" ? 1 : 0;
       P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
-      // Morris walls: the depth below the block's nearest face and that face's outward normal
-      if (morris) {
+      // the depth below the block's nearest face and that face's outward normal
+      if (surface) {
         const double q[3] = {x, y, z};
         double depth = INFINITY, n[3] = {0, 0, 0};
         int axis = 0;
@@ -247,7 +248,7 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
             if (d < depth) { depth = d; axis = a; sign = side; }
           }
         n[axis] = sign;
-        set_morris_geometry(P, depth, n);
+        set_surface_geometry(P, depth, n);
       }
     });
   }
@@ -299,7 +300,7 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
     for (const char* f : {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz}) P.add_field(f, BodyFields::owner);
     double* n[3] = {P.field(BodyFields::wall_nx).data(), P.field(BodyFields::wall_ny).data(),
                     P.field(BodyFields::wall_nz).data()};
-    double* depth = morris ? P.add_field(MorrisWallFields::depth, MorrisWallFields::owner).data() : nullptr;
+    double* depth = surface ? P.add_field(WallSurfaceFields::depth, WallSurfaceFields::owner).data() : nullptr;
     for (std::size_t i = first; i < P.size(); ++i) {
       const geometry::Point nrm = geometry::outward_normal(*b.shape, {P.x[i], P.y[i], P.z[i]}, 1e-3 * s.dx);
       for (int a = 0; a < 3; ++a) n[a][i] = nrm[a];

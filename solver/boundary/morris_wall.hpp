@@ -8,18 +8,14 @@
 // which makes the velocity vanish on the surface along the line a-b whatever the fluid's profile;
 // the cap keeps a fluid particle that reaches the wall from seeing an unbounded shear. The relative
 // velocity enters the laminar and the artificial viscosity; continuity reads the wall's own velocity.
-// Each wall particle carries its depth d_b and the unit normal of the surface nearest it, pointing
-// into the fluid (BodyFields::wall_nx..nz): the tangent plane at a box corner is the plane normal to
-// the corner's diagonal.
+// Each wall particle carries its depth d_b and the unit normal of the surface nearest it
+// (boundary/wall_surface.hpp): the tangent plane at a box corner is the plane normal to its diagonal.
 #pragma once
 #include <algorithm>
 
-namespace geosph {
+#include "boundary/wall_surface.hpp"
 
-struct MorrisWallFields {
-  static constexpr const char* owner = "morris_walls";
-  static constexpr const char* depth = "wall_depth";  // [m] distance of the wall particle behind the surface
-};
+namespace geosph {
 
 inline constexpr double kMorrisBetaMax = 1.5;  // walls.morris_beta_max's default
 

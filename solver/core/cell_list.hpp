@@ -144,6 +144,23 @@ class CellList {
     for (std::size_t k = 0; k < nb.n; ++k) f(nb.j[k], nb.dx[k], nb.dy[k], flat ? 0.0 : nb.dz[k], nb.r2[k]);
   }
 
+  // f(j, dx, dy, dz, r2) for every particle j within radius of the point (x, y, z), which need not be a
+  // particle's (a ghost wall's mirror point); d = point - x_j (minimum image), 2D: dz = 0. Reads the
+  // current positions through the cells of the last build(): a particle moves less than the skin
+  // between builds and the cells cover radius + skin.
+  template <class F>
+  void for_each_near_point(const Particles& P, double x, double y, double z, F&& f) const {
+    const bool flat = dim_ == 2;
+    for_each_range_at(x, y, z, [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
+      for (std::uint32_t s = s0; s < s1; ++s) {
+        const std::uint32_t j = identity_ ? s : sorted_[s];
+        const double dx = x - (P.x[j] + sx), dy = y - (P.y[j] + sy), dz = flat ? 0.0 : z - (P.z[j] + sz);
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < r2max_) f(j, dx, dy, dz, r2);
+      }
+    });
+  }
+
  private:
   template <int Dim, bool RecordImage = false>
   void gather_scan(const Particles& P, std::size_t i, Neighbors& out) const {
@@ -212,7 +229,12 @@ class CellList {
   // order, so a row is one range (unless it wraps around a periodic x boundary).
   template <class G>
   void for_each_range(const Particles& P, std::size_t i, G&& g) const {
-    const int ci = cell_coord(P.x[i], 0), cj = cell_coord(P.y[i], 1), ck = dim_ == 3 ? cell_coord(P.z[i], 2) : 0;
+    for_each_range_at(P.x[i], P.y[i], P.z[i], g);
+  }
+  // The same around any point (x, y, z).
+  template <class G>
+  void for_each_range_at(double x, double y, double z, G&& g) const {
+    const int ci = cell_coord(x, 0), cj = cell_coord(y, 1), ck = dim_ == 3 ? cell_coord(z, 2) : 0;
     const int S = kStencil, kmin = dim_ == 3 ? -S : 0, kmax = dim_ == 3 ? S : 0;
     const bool row_wraps = periodic_[0] && (ci < S || ci >= nc_[0] - S);
     for (int dk = kmin; dk <= kmax; ++dk) {

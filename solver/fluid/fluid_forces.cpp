@@ -135,7 +135,7 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
   const double* wvy = P.find(DummyWallFields::vy);
   const double* wvz = P.find(DummyWallFields::vz);
   // Morris walls: each wall particle's depth behind the surface and the surface normal into the fluid
-  const double* mdepth = Morris ? P.find(MorrisWallFields::depth) : nullptr;
+  const double* mdepth = Morris ? P.find(WallSurfaceFields::depth) : nullptr;
   const double* mnx = Morris ? P.find(BodyFields::wall_nx) : nullptr;
   const double* mny = Morris ? P.find(BodyFields::wall_ny) : nullptr;
   const double* mnz = Morris ? P.find(BodyFields::wall_nz) : nullptr;

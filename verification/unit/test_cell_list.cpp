@@ -85,6 +85,43 @@ TEST(CellList, MatchesBruteForcePeriodic) {
   compare_with_brute_force(box3, 0.09, 800, 5, true);
 }
 
+// for_each_near_point (a ghost wall's mirror point): every particle within radius of an arbitrary point,
+// minimum image on periodic axes, the same as brute force, also after the particles are permuted.
+TEST(CellList, PointQueryMatchesBruteForce) {
+  Box box; box.dim = 2; box.lo = {0, 0, 0}; box.hi = {0.6, 0.5, 0}; box.periodic = {true, false, false};
+  for (const bool permute : {false, true}) {
+    Particles P = random_particles(box, 1200, 7);
+    CellList cl;
+    const double radius = 0.07;
+    ASSERT_EQ(cl.build(P, box, radius), -1);
+    if (permute) {
+      P.permute(cl.sorted());
+      cl.mark_permuted();
+    }
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> ux(0.0, 0.6), uy(0.0, 0.5);
+    std::size_t found = 0;
+    for (int q = 0; q < 200; ++q) {
+      const double x = q == 0 ? 0.0 : ux(rng), y = q == 1 ? 0.5 : uy(rng);  // on the edges too
+      std::set<std::size_t> expect, got;
+      for (std::size_t j = 0; j < P.size(); ++j) {
+        const double dx = min_image(x - P.x[j], box, 0), dy = y - P.y[j];
+        if (dx * dx + dy * dy < radius * radius) expect.insert(j);
+      }
+      cl.for_each_near_point(P, x, y, 0.0, [&](std::size_t j, double dx, double dy, double dz, double r2) {
+        EXPECT_TRUE(got.insert(j).second) << "particle " << j << " visited twice";
+        EXPECT_NEAR(dx, min_image(x - P.x[j], box, 0), 1e-12);
+        EXPECT_NEAR(dy, y - P.y[j], 1e-12);
+        EXPECT_EQ(dz, 0.0);
+        EXPECT_NEAR(r2, dx * dx + dy * dy, 1e-15);
+      });
+      EXPECT_EQ(got, expect) << "point (" << x << ", " << y << ")";
+      found += got.size();
+    }
+    EXPECT_GT(found, 1000u);
+  }
+}
+
 TEST(CellList, SortedIsAPermutationGroupedByCell) {
   Box box; box.dim = 2; box.lo = {0, 0, 0}; box.hi = {1, 1, 0};
   Particles P = random_particles(box, 500, 6);

@@ -49,7 +49,7 @@ TEST(MorrisWall, VelocityFactorIsTheCappedExtrapolation) {
 TEST(MorrisWall, WallParticlesCarryDepthAndNormal) {
   const Scene s = parse_scene(morris_channel(), "ok.json");
   const Particles P = build_particles(s);
-  const double* d = P.find(MorrisWallFields::depth);
+  const double* d = P.find(WallSurfaceFields::depth);
   const double* nx = P.find(BodyFields::wall_nx);
   const double* ny = P.find(BodyFields::wall_ny);
   ASSERT_TRUE(d && nx && ny);
@@ -97,6 +97,6 @@ TEST(MorrisWall, FreeSlipAndSoilAreRejected) {
   j["walls"]["type"] = "morris";
   test::expect_scene_error(j, "walls.type", "soil needs dummy walls");
   j = morris_channel();
-  j["walls"]["type"] = "ghost";
-  test::expect_scene_error(j, "walls.type", "must be one of {dummy, repulsive, morris}");
+  j["walls"]["type"] = "mirror";
+  test::expect_scene_error(j, "walls.type", "must be one of {dummy, repulsive, morris, ghost}");
 }

@@ -1,0 +1,37 @@
+// Ghost walls (walls.type "ghost"): fixed ghost particles (Marrone, Antuono, Colagrossi, Colicchio,
+// Le Touze & Graziani 2011, Comput. Methods Appl. Mech. Engrg. 200, 1526-1542, Sec. 3.1). Each wall
+// particle w, at depth d behind the wall surface with unit normal n into the fluid
+// (boundary/wall_surface.hpp), is the mirror image of the point x_m = x_w + 2 d n inside the fluid; at a
+// box corner n is the corner's diagonal and x_m the point reflected through the corner (the double
+// mirror). Its values are the fluid's at x_m by first-order moving least squares,
+//   phi(x_m) = sum_f (c . b_f) W_mf V_f phi_f,   A c = e_1,   A = sum_f b_f b_f^T W_mf V_f,
+//   b_f = (1, (x_f - x_m) / h),  V_f = m_f / rho_f,
+// which reproduces linear fields exactly (Shepard's sum_f W_mf V_f phi_f / sum_f W_mf V_f where A is near
+// singular: too few fluid neighbours to span the dimension), and then
+//   p_w = p(x_m) + rho(x_m) g . (x_w - x_m)     the hydrostatic step across the wall (fixed walls),
+//   no slip: v_w = 2 v_wall - v(x_m)            the opposite velocity, zero on the surface;
+// free slip has no viscous wall interaction, as with dummy walls. Dummy walls (Adami et al. 2012) average
+// the fluid around the wall particle itself, a one-sided average whose wall velocity is first order;
+// the mirror reproduces a linear velocity profile through the wall. Fluid-only, single-phase scenes
+// (the scene rejects ghost walls with soil).
+#pragma once
+#include <array>
+
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+#include "fluid/equation_of_state.hpp"
+#include "io/scene.hpp"
+
+namespace geosph {
+
+// The mirror point of a wall particle at x with depth d behind the surface and unit normal n.
+inline std::array<double, 3> ghost_mirror_point(const double x[3], double depth, const double n[3]) {
+  return {x[0] + 2 * depth * n[0], x[1] + 2 * depth * n[1], x[2] + 2 * depth * n[2]};
+}
+
+// Writes p, rho, m of every dummy-kind wall particle and, for no slip (wvx non-null), its ghost
+// velocity into wvx, wvy, wvz.
+void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
+                        const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz);
+
+}  // namespace geosph

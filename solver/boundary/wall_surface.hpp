@@ -1,0 +1,15 @@
+// Where a wall particle sits relative to the wall surface, for the treatments that need it (Morris
+// walls, boundary/morris_wall.hpp; ghost walls, boundary/ghost_wall.hpp): its depth behind the surface
+// and the unit normal of the surface nearest it, pointing into the fluid (BodyFields::wall_nx..nz).
+// Containers: the nearest point of the inner box (a corner particle's normal is the corner's
+// diagonal); blocks: the nearest face; walls.boundaries: the shape's signed distance and normal.
+#pragma once
+
+namespace geosph {
+
+struct WallSurfaceFields {
+  static constexpr const char* owner = "wall_surface";
+  static constexpr const char* depth = "wall_depth";  // [m] distance of the wall particle behind the surface
+};
+
+}  // namespace geosph
