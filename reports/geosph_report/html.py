@@ -7,7 +7,8 @@ from string import Template
 
 from . import figures
 from .convergence import studies
-from .records import cheapest_passing, group_by, representative, stability_records, step_cost, wall_comparisons
+from .records import (cheapest_passing, group_by, representative, scene_variant, stability_records, step_cost,
+                      wall_comparisons)
 
 TEMPLATE = Path(__file__).resolve().parent.parent / "templates" / "page.html"
 SECTIONS = (("summary", "Summary"), ("cases", "Cases"), ("convergence", "Convergence studies"),
@@ -189,29 +190,31 @@ def boundaries_section(records):
     for case, recs in cases.items():
         parts.append(f"<h3>{escape(case)}</h3>")
         rows, classes = [], []
-        for r in sorted(recs, key=lambda r: (r.level, -r.dx, r.wall_treatment)):
+        for r in sorted(recs, key=lambda r: (r.level, scene_variant(r), -r.dx, r.wall_treatment)):
             cost = step_cost(r)
             for m in r.metrics:
                 ok = m["passed"] and r.stable
-                rows.append([escape(r.wall_treatment), escape(r.level), (fmt(r.dx), "num"), escape(m["name"]),
+                rows.append([escape(r.wall_treatment), escape(r.level), escape(scene_variant(r)), (fmt(r.dx), "num"),
+                             escape(m["name"]),
                              (fmt(m["value"]), "num"), (fmt(m["tolerance"]), "num"), _status(ok, not r.stable),
                              ("yes" if r.stable else "NO", "status"), (fmt(r.wall_particles, "d"), "num"),
                              (fmt(r.particles, "d"), "num"), (fmt(r.steps, "d"), "num"),
                              (fmt(None if cost is None else 1e3 * cost, ".3g"), "num")])
                 classes.append("pass" if ok else "fail")
-        parts.append(table(["walls", "level", "dx", "metric", "value", "tolerance", "status", "stable",
+        parts.append(table(["walls", "level", "scene", "dx", "metric", "value", "tolerance", "status", "stable",
                             "wall particles", "moving particles", "steps", "wall time per step [ms]"],
                            rows, classes))
         verdicts = []
-        for (level, dx), group in group_by(recs, lambda r: (r.level, r.dx)).items():
+        for (level, scene, dx), group in group_by(recs, lambda r: (r.level, scene_variant(r), r.dx)).items():
+            where = f"{escape(level)}, {escape(scene) + ', ' if scene else ''}dx = {fmt(dx)}"
             ok = [r for r in group if r.passed and step_cost(r) is not None]
             if ok:
                 best = min(ok, key=step_cost)
-                verdicts.append(f"<li>{escape(level)}, dx = {fmt(dx)}: <b>{escape(best.wall_treatment)}</b> "
+                verdicts.append(f"<li>{where}: <b>{escape(best.wall_treatment)}</b> "
                                 f"({1e3 * step_cost(best):.3g} ms per step; passing: "
                                 f"{escape(', '.join(sorted(r.wall_treatment for r in ok)))})</li>")
             else:
-                verdicts.append(f'<li>{escape(level)}, dx = {fmt(dx)}: <span class="fail">no treatment meets '
+                verdicts.append(f'<li>{where}: <span class="fail">no treatment meets '
                                 "the tolerance</span></li>")
         parts.append(f"<p>Cheapest treatment meeting the tolerance:</p><ul>{''.join(verdicts)}</ul>")
         known = {r.wall_treatment: r.wall_treatment_open for r in recs if r.wall_treatment_open}

@@ -258,6 +258,11 @@ def wall_comparisons(records):
     return out
 
 
+def scene_variant(r):
+    """The record's variant without the boundary comparison's walls=T token ("" for the case's own)."""
+    return " ".join(t for t in (r.variant or "").split() if not t.startswith("walls="))
+
+
 def step_cost(r):
     """Wall time per step [s], or None without steps."""
     return r.wall_s / r.steps if r.steps > 0 else None

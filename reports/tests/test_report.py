@@ -101,6 +101,22 @@ class BoundaryComparisonTest(unittest.TestCase):
         stab = html.split('<section id="stability">')[1].split("</section>")[0]
         self.assertNotIn("walls=", stab)  # the comparison runs are not stability variants
 
+    def test_scene_variants_judged_apart(self):
+        recs = []
+        for scene, errs in (("trapezoid", {"dummy": 0.01, "ghost": 0.03}), ("v_shape", {"dummy": 0.01, "ghost": 0.015})):
+            for walls, err in errs.items():
+                variant = scene if walls == "dummy" else f"{scene} walls={walls}"
+                rec = synthetic.base("tank", 0.01, wall_treatment=walls, variant=variant,
+                                     metrics=synthetic._metric("pressure_rel_l2", err, 0.02, "synthetic"))
+                rec["steps"], rec["wall_s"] = 1000, 10.0 if walls == "ghost" else 20.0
+                if walls != "dummy":
+                    rec["wall_comparison"] = True
+                recs.append(records.parse_record(rec, f"{scene}-{walls}.json"))
+        self.assertEqual(records.scene_variant(recs[1]), "trapezoid")
+        sec = boundaries_section(recs)
+        self.assertIn("quick, trapezoid, dx = 0.01: <b>dummy</b>", sec)  # ghost misses the tolerance there
+        self.assertIn("quick, v_shape, dx = 0.01: <b>ghost</b>", sec)    # and is the cheaper one here
+
     def test_no_comparison_without_several_treatments(self):
         recs = [records.parse_record(r, p) for p, r in synthetic.all_records().items()]
         self.assertIn("No case was run with more than one wall treatment", boundaries_section(recs))

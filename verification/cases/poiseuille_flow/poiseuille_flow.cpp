@@ -64,11 +64,11 @@ std::vector<Record> run_poiseuille_flow(const CaseContext& ctx, const std::strin
     add_case_metric(rec, cfg, "velocity_rms_over_vmax", worst, ok);
     out.push_back(rec);
   }
-  // Expected order 1: the SPH Laplacian (Morris 1997) is second order in the interior, but the
-  // no-slip dummy-wall extrapolation (Adami 2012) places the wall velocity with O(dx) error,
-  // which dominates the profile error near the plates. Morris walls (--walls morris) with the
-  // published cap beta_max = 1.5 are first order as well: beyond the cap the wall velocity is
-  // mis-extrapolated by O(dx).
+  // Expected order 1 (observed 0.87 between L/dx = 20 and 40, flattening to 0.3 at 80). The wall
+  // velocity is not what limits it: ghost walls (--walls ghost), exact for a linear profile through
+  // the wall, give the dummy walls' errors to two digits (0.0072, 0.0040, 0.0033). Morris walls with
+  // the published cap beta_max = 1.5 are first order with a six times larger constant: beyond the cap
+  // they mis-extrapolate the wall velocity by O(dx).
   annotate_observed_order(out, 1.0);
   return out;
 }
