@@ -13,7 +13,8 @@ cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGEOSPH_SANI
 cmake --build "$BUILD_DIR" -j "$JOBS" --target geosph geosph_unit_tests
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir "$BUILD_DIR" -L unit --output-on-failure -j "$JOBS"
+# one OpenMP thread per test while the tests run side by side (ci/test.sh says why)
+OMP_NUM_THREADS=1 ctest --test-dir "$BUILD_DIR" -L unit --output-on-failure -j "$JOBS"
 OUT="$(mktemp -d)"
 trap 'rm -rf "$OUT"' EXIT
 for case in dam_break_2d terzaghi_consolidation; do
