@@ -9,6 +9,8 @@
 // Ghost walls (walls.type "ghost", boundary/ghost_wall.hpp) fill the same fields from their mirror points.
 #pragma once
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -35,6 +37,7 @@ class DummyWalls {
   const Scene& scene_;
   const FluidForces& fluid_;
   bool no_slip_;
+  mutable std::vector<std::uint8_t> unmirrored_;  // ghost walls: the particles left to the dummy treatment
 };
 
 }  // namespace geosph

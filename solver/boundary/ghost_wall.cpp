@@ -40,7 +40,9 @@ bool mls_coefficients(const std::vector<MirrorNeighbour>& nb, int dim, double c[
 }  // namespace
 
 void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
-                        const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz) {
+                        const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz,
+                        std::vector<std::uint8_t>& unmirrored) {
+  unmirrored.assign(P.size(), 0);
   const int dim = scene.dim;
   const double h = scene.h(), inv_h = 1.0 / h;
   const double volume = std::pow(scene.dx, dim);
@@ -74,11 +76,8 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
             double c[4] = {0, 0, 0, 0};
             double sv = 0;
             for (const auto& q : nb) sv += q.wv;
-            if (!(sv > 0)) {  // no fluid near the mirror point: the fluid's rest state
-              P.p[w] = e.p_bg;
-              P.rho[w] = e.rho0;
-              P.m[w] = e.rho0 * volume;
-              if (wvx) { wvx[w] = P.vx[w]; wvy[w] = P.vy[w]; wvz[w] = P.vz[w]; }
+            if (!(sv > 0)) {  // no fluid near the mirror point: the dummy walls' value at w
+              unmirrored[w] = 1;
               continue;
             }
             if (!mls_coefficients(nb, dim, c)) c[0] = 1.0 / sv;  // Shepard

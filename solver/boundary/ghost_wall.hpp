@@ -10,12 +10,16 @@
 // singular: too few fluid neighbours to span the dimension), and then
 //   p_w = p(x_m) + rho(x_m) g . (x_w - x_m)     the hydrostatic step across the wall (fixed walls),
 //   no slip: v_w = 2 v_wall - v(x_m)            the opposite velocity, zero on the surface;
-// free slip has no viscous wall interaction, as with dummy walls. Dummy walls (Adami et al. 2012) average
+// free slip has no viscous wall interaction, as with dummy walls. A wall particle whose mirror point
+// has no fluid within the support (the wall above the fluid; the far side of a wall thinner than
+// two supports, where the nearest surface is not the one facing the fluid) takes the dummy value. Dummy walls (Adami et al. 2012) average
 // the fluid around the wall particle itself, a one-sided average whose wall velocity is first order;
 // the mirror reproduces a linear velocity profile through the wall. Fluid-only, single-phase scenes
 // (the scene rejects ghost walls with soil).
 #pragma once
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
@@ -29,9 +33,13 @@ inline std::array<double, 3> ghost_mirror_point(const double x[3], double depth,
   return {x[0] + 2 * depth * n[0], x[1] + 2 * depth * n[1], x[2] + 2 * depth * n[2]};
 }
 
-// Writes p, rho, m of every dummy-kind wall particle and, for no slip (wvx non-null), its ghost
-// velocity into wvx, wvy, wvz.
+// Writes p, rho, m of every dummy-kind wall particle whose mirror point has fluid within the kernel
+// support and, for no slip (wvx non-null), its ghost velocity into wvx, wvy, wvz; sets unmirrored[w] = 1
+// for the others (size P.size()), which take the dummy walls' values at the particle itself
+// (DummyWalls::update): the far side of a wall thinner than two supports, whose nearest surface is not
+// the one facing the fluid, and the wall above the fluid.
 void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
-                        const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz);
+                        const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz,
+                        std::vector<std::uint8_t>& unmirrored);
 
 }  // namespace geosph

@@ -26,7 +26,7 @@ json ghost_tank() {
     "time": {"end": 0.01},
     "materials": {"water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
     "bodies": [{"material": "water", "shape": "box", "min": [0, 0], "max": [1, 1]}],
-    "walls": {"type": "ghost", "containers": [{"min": [0, 0], "max": [1, 1], "open": ["top"]}]}
+    "walls": {"type": "ghost", "containers": [{"min": [0, 0], "max": [1, 1.25], "open": ["top"]}]}
   })");
 }
 
@@ -62,7 +62,8 @@ TEST(GhostWall, LinearFieldsMirrorExactly) {
   std::vector<TaitEos> eos;
   for (const auto& m : s.materials) eos.emplace_back(m);
   std::vector<double> wvx(P.size()), wvy(P.size()), wvz(P.size());
-  update_ghost_walls(s, eos, P, cells, {0, -g, 0}, wvx.data(), wvy.data(), wvz.data());
+  std::vector<std::uint8_t> unmirrored;
+  update_ghost_walls(s, eos, P, cells, {0, -g, 0}, wvx.data(), wvy.data(), wvz.data(), unmirrored);
   const double* depth = P.find(WallSurfaceFields::depth);
   ASSERT_NE(depth, nullptr);
   int floor = 0, corner = 0;
@@ -75,8 +76,17 @@ TEST(GhostWall, LinearFieldsMirrorExactly) {
     EXPECT_NEAR(wvx[w], shear * P.y[w], 1e-12) << "x = " << P.x[w] << ", y = " << P.y[w];
     EXPECT_NEAR(wvy[w], 0.0, 1e-12);
     EXPECT_NEAR(P.rho[w], eos[0].density(P.p[w]), 1e-12 * rho0);
+    EXPECT_EQ(unmirrored[w], 0);
     (under_floor ? floor : corner)++;
   }
+  // the side walls above the water have no fluid at their mirror points
+  int above = 0;
+  for (std::size_t w = 0; w < P.size(); ++w)
+    if (P.kind[w] == Kind::DummyWall && P.y[w] > H + s.support()) {
+      EXPECT_EQ(unmirrored[w], 1) << "x = " << P.x[w] << ", y = " << P.y[w];
+      ++above;
+    }
+  EXPECT_GT(above, 0);
   const int L = wall_layers(s);
   EXPECT_EQ(floor, 20 * L);  // L layers under the 20-particle-wide floor
   EXPECT_EQ(corner, L * L);  // the L x L corner block
