@@ -287,7 +287,7 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
     todo.push_back(&c);
   }
   fs::create_directories(out_dir);
-  int failed = 0, passed = 0, studies = 0;
+  int failed = 0, passed = 0, studies = 0, known = 0;
   for (const auto* c : todo)
     for (const auto& treatment : wall_runs(*c, walls, !names.empty())) {
     ctx.walls = treatment;
@@ -308,10 +308,15 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
                   c->name.c_str(), r.dx, r.particles, r.steps, r.wall_s, r.particle_steps_per_s,
                   r.stable ? "stable" : "UNSTABLE", r.scored ? "" : " (study, not scored)");
       if (!r.scored) ++studies;
+      // --walls all: a treatment its case.json lists in open_wall_treatments is a known miss of the
+      // comparison, reported but not a failure of the catalogue (ctest walls.<case>.<T> still fails)
+      else if (!r.passed() && walls == "all" && r.extra.contains("wall_treatment_open")) ++known;
       else (r.passed() ? passed : failed)++;
     }
     }
-  std::printf("verify: %d passed, %d failed, %d unscored studies\n", passed, failed, studies);
+  std::printf("verify: %d passed, %d failed, %d unscored studies", passed, failed, studies);
+  if (known > 0) std::printf(", %d known misses of the wall comparison (case.json open_wall_treatments)", known);
+  std::printf("\n");
   return failed == 0 ? 0 : 1;
 }
 
