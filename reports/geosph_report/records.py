@@ -46,7 +46,7 @@ class Record:
     relpath: str = None  # path relative to the results directory, for display
     scored: bool = True  # False: a study run (e.g. a stabilisation switched off), reported, not judged
     provenance: dict = None  # solver_version, compiler, build_flags, threads, scene_hash
-    wall_treatment: str = None  # the scene's walls.type (dummy, repulsive, morris), if it has walls
+    wall_treatment: str = None  # the scene's walls.type (dummy, repulsive, morris, ghost), if it has walls
     wall_particles: int = None
     wall_comparison: bool = False  # run with a treatment other than the scene's own (geosph verify --walls)
     wall_treatment_open: str = None  # why that treatment misses the tolerance today (case.json open_wall_treatments)

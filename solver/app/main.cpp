@@ -290,29 +290,29 @@ int cmd_verify(const std::vector<std::string>& names, const std::string& level, 
   int failed = 0, passed = 0, studies = 0, known = 0;
   for (const auto* c : todo)
     for (const auto& treatment : wall_runs(*c, walls, !names.empty())) {
-    ctx.walls = treatment;
-    std::fprintf(stderr, "== %s (%s%s)\n", c->name.c_str(), level.c_str(),
-                 treatment.empty() ? "" : (", " + treatment + " walls").c_str());
-    const auto records = verify::run_case(*c, ctx);
-    for (std::size_t k = 0; k < records.size(); ++k) {
-      const auto& r = records[k];
-      std::string file = c->name + "__" + level + (treatment.empty() ? "" : "__walls-" + treatment) +
-                         (records.size() > 1 ? "__" + std::to_string(k) : "") + ".json";
-      const auto tmp = fs::path(out_dir) / (file + ".tmp");
-      std::ofstream(tmp) << r.to_json().dump(1) << "\n";
-      fs::rename(tmp, fs::path(out_dir) / file);
-      for (const auto& m : r.metrics)
-        std::printf("%-18s dx=%-9.4g %-32s %-12.5g tol %-10.4g %s\n", c->name.c_str(), r.dx, m.name.c_str(), m.value,
-                    m.tolerance, r.scored ? (m.passed ? "PASS" : "FAIL") : (m.passed ? "study: pass" : "study: fail"));
-      std::printf("%-18s dx=%-9.4g %ld particles, %ld steps, %.2f s wall, %.3g particle-steps/s, %s%s\n",
-                  c->name.c_str(), r.dx, r.particles, r.steps, r.wall_s, r.particle_steps_per_s,
-                  r.stable ? "stable" : "UNSTABLE", r.scored ? "" : " (study, not scored)");
-      if (!r.scored) ++studies;
-      // --walls all: a treatment its case.json lists in open_wall_treatments is a known miss of the
-      // comparison, reported but not a failure of the catalogue (ctest walls.<case>.<T> still fails)
-      else if (!r.passed() && walls == "all" && r.extra.contains("wall_treatment_open")) ++known;
-      else (r.passed() ? passed : failed)++;
-    }
+      ctx.walls = treatment;
+      std::fprintf(stderr, "== %s (%s%s)\n", c->name.c_str(), level.c_str(),
+                   treatment.empty() ? "" : (", " + treatment + " walls").c_str());
+      const auto records = verify::run_case(*c, ctx);
+      for (std::size_t k = 0; k < records.size(); ++k) {
+        const auto& r = records[k];
+        std::string file = c->name + "__" + level + (treatment.empty() ? "" : "__walls-" + treatment) +
+                           (records.size() > 1 ? "__" + std::to_string(k) : "") + ".json";
+        const auto tmp = fs::path(out_dir) / (file + ".tmp");
+        std::ofstream(tmp) << r.to_json().dump(1) << "\n";
+        fs::rename(tmp, fs::path(out_dir) / file);
+        for (const auto& m : r.metrics)
+          std::printf("%-18s dx=%-9.4g %-32s %-12.5g tol %-10.4g %s\n", c->name.c_str(), r.dx, m.name.c_str(), m.value,
+                      m.tolerance, r.scored ? (m.passed ? "PASS" : "FAIL") : (m.passed ? "study: pass" : "study: fail"));
+        std::printf("%-18s dx=%-9.4g %ld particles, %ld steps, %.2f s wall, %.3g particle-steps/s, %s%s\n",
+                    c->name.c_str(), r.dx, r.particles, r.steps, r.wall_s, r.particle_steps_per_s,
+                    r.stable ? "stable" : "UNSTABLE", r.scored ? "" : " (study, not scored)");
+        if (!r.scored) ++studies;
+        // --walls all: a treatment its case.json lists in open_wall_treatments is a known miss of the
+        // comparison, reported but not a failure of the catalogue (ctest walls.<case>.<T> still fails)
+        else if (!r.passed() && walls == "all" && r.extra.contains("wall_treatment_open")) ++known;
+        else (r.passed() ? passed : failed)++;
+      }
     }
   std::printf("verify: %d passed, %d failed, %d unscored studies", passed, failed, studies);
   if (known > 0) std::printf(", %d known misses of the wall comparison (case.json open_wall_treatments)", known);

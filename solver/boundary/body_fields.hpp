@@ -12,7 +12,7 @@ struct BodyFields {
   static constexpr const char* wall_free_slip = "wall_free_slip";  // int flag: the wall's container is free-slip
                                                                     // (only where containers differ in slip)
   // outward unit normal of a walls.boundaries surface at its wall particles (zero at container walls,
-  // but for Morris walls: the normal of the nearest container or block face, boundary/morris_wall.hpp)
+  // but for Morris and ghost walls: the normal of the nearest container or block face, boundary/wall_surface.hpp)
   static constexpr const char* wall_nx = "wall_nx", *wall_ny = "wall_ny", *wall_nz = "wall_nz";
   static constexpr const char* surcharge = "surcharge";            // [Pa] on a soil body's top row
   static constexpr const char* surcharge_ramp = "surcharge_ramp";  // [s]

@@ -10,7 +10,8 @@ namespace geosph {
 
 DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
     // Morris walls (boundary/morris_wall.hpp) take the dummy pressure, but their velocity per pair
-    : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall() && scene.walls.type != "morris") {}
+    : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall() && scene.walls.type != "morris"),
+      ghost_(scene.walls.type == "ghost") {}
 
 void DummyWalls::allocate(Particles& P) const {
   if (!no_slip_) return;
@@ -20,8 +21,7 @@ void DummyWalls::allocate(Particles& P) const {
 void DummyWalls::update(Particles& P, const CellList& cells, const std::array<double, 3>& g) const {
   // ghost walls: the same fields from the fluid at each mirror point, and the dummy values below for the
   // wall particles whose mirror point has no fluid near it
-  const bool ghost = scene_.walls.type == "ghost";
-  if (ghost)
+  if (ghost_)
     update_ghost_walls(scene_, fluid_.eos(), P, cells, g, no_slip_ ? P.field(DummyWallFields::vx).data() : nullptr,
                        no_slip_ ? P.field(DummyWallFields::vy).data() : nullptr,
                        no_slip_ ? P.field(DummyWallFields::vz).data() : nullptr, unmirrored_);
@@ -39,7 +39,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
         double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
-          if (P.kind[w] != Kind::DummyWall || (ghost && !unmirrored_[w])) continue;
+          if (P.kind[w] != Kind::DummyWall || (ghost_ && !unmirrored_[w])) continue;
           double sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0, sn = 0;
           double wmax = -1;
           std::uint16_t mat = 0;

@@ -36,7 +36,7 @@ class DummyWalls {
  private:
   const Scene& scene_;
   const FluidForces& fluid_;
-  bool no_slip_;
+  bool no_slip_, ghost_;
   mutable std::vector<std::uint8_t> unmirrored_;  // ghost walls: the particles left to the dummy treatment
 };
 

@@ -72,14 +72,14 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
               nb.push_back({f, W * P.m[f] / P.rho[f], {-dx * inv_h, -dy * inv_h, -dz * inv_h}});
               if (W > wmax) { wmax = W; mat = P.material[f]; }
             });
-            const TaitEos& e = eos[mat];
-            double c[4] = {0, 0, 0, 0};
             double sv = 0;
             for (const auto& q : nb) sv += q.wv;
             if (!(sv > 0)) {  // no fluid near the mirror point: the dummy walls' value at w
               unmirrored[w] = 1;
               continue;
             }
+            const TaitEos& e = eos[mat];
+            double c[4] = {0, 0, 0, 0};
             if (!mls_coefficients(nb, dim, c)) c[0] = 1.0 / sv;  // Shepard
             double pm = 0, rm = 0, vm[3] = {0, 0, 0};
             double lo[5] = {INFINITY, INFINITY, INFINITY, INFINITY, INFINITY}, hi[5] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};

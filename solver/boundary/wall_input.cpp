@@ -1,5 +1,6 @@
 #include "boundary/wall_input.hpp"
 
+#include "boundary/morris_wall.hpp"
 #include "geometry/shape_input.hpp"
 #include "io/scene_reference.hpp"
 
@@ -76,7 +77,7 @@ WallSpec parse_walls(const JsonFields& w, int dim) {
   walls.slip = w.choice("slip", {"no_slip", "free_slip"}, "no_slip");
   walls.layers = static_cast<int>(w.integer("layers", 1, 10, 0));
   walls.repulsive_strength = w.number("repulsive_strength", Range::non_negative(), 0.0);
-  walls.morris_beta_max = w.number("morris_beta_max", Range::between(1, 1000), 1.5);
+  walls.morris_beta_max = w.number("morris_beta_max", Range::between(1, 1000), kMorrisBetaMax);
   if (w.has("morris_beta_max") && walls.type != "morris") w.fail("morris_beta_max", "applies to walls.type \"morris\" only");
   if (!w.has("containers") && !w.has("blocks") && !w.has("boundaries"))
     w.fail("containers", "is missing: walls need 'containers', 'blocks' or 'boundaries'");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "boundary/morris_wall.hpp"
 #include "core/cell_list.hpp"
 #include "core/kernels.hpp"
 #include "geometry/shape.hpp"
@@ -85,11 +86,11 @@ struct BoundarySpec {
 };
 
 struct WallSpec {
-  std::string type = "dummy";         // dummy (Adami et al. 2012) | repulsive (Monaghan 1994) | morris (1997)
+  std::string type = "dummy";         // dummy (Adami et al. 2012) | repulsive (Monaghan 1994) | morris (1997) | ghost (2011)
   std::string slip = "no_slip";       // no_slip | free_slip
   int layers = 0;                     // 0: enough layers to cover the kernel support
   double repulsive_strength = 0;      // D [m^2/s^2]; 0: 0.05 c0^2 (i.e. ~5 g H for c0 = 10 sqrt(gH))
-  double morris_beta_max = 1.5;       // Morris walls: cap of beta = 1 + d_wall/d_fluid (Morris et al. 1997)
+  double morris_beta_max = kMorrisBetaMax;  // Morris walls: cap of beta = 1 + d_wall/d_fluid
   std::vector<ContainerSpec> containers;
   std::vector<ContainerSpec> blocks;  // solid boxes of wall particles (e.g. a clamp); `open` unused
   std::vector<BoundarySpec> boundaries;

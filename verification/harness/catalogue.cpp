@@ -34,13 +34,13 @@ CaseEntry read_entry(const std::filesystem::path& file) {
     if (!l.is_string()) f.fail("labels", "must be an array of strings");
     c.labels.push_back(l.get<std::string>());
   }
-  const auto scene_file = file.parent_path() / "scene.json";
-  if (std::filesystem::exists(scene_file)) {
-    const nlohmann::json scene = read_json_file(scene_file);
-    if (scene.contains("walls") && scene["walls"].contains("type") && scene["walls"]["type"].is_string())
-      c.own_walls = scene["walls"]["type"].get<std::string>();
-  }
-  if (f.has("wall_treatments")) {
+  if (f.has("wall_treatments")) {  // the boundary comparison needs the scene's own treatment
+    const auto scene_file = file.parent_path() / "scene.json";
+    if (std::filesystem::exists(scene_file)) {
+      const nlohmann::json scene = read_json_file(scene_file);
+      if (scene.contains("walls") && scene["walls"].contains("type") && scene["walls"]["type"].is_string())
+        c.own_walls = scene["walls"]["type"].get<std::string>();
+    }
     c.wall_treatments = f.texts("wall_treatments", wall_types());
     if (c.own_walls.empty()) f.fail("wall_treatments", "the case's scene has no walls (scene.json walls.type)");
     if (std::find(c.wall_treatments.begin(), c.wall_treatments.end(), c.own_walls) == c.wall_treatments.end())

@@ -19,7 +19,7 @@ struct CaseEntry {
   std::vector<std::string> levels;  // the keys of case.json "levels"
   std::vector<std::string> labels;  // case.json "labels"
   // case.json "wall_treatments": the walls.type values the case is also run with in the boundary
-  // comparison (ctest label walls; geosph verify --walls); own_walls: its scene's walls.type
+  // comparison (ctest label walls; geosph verify --walls); own_walls: its scene's walls.type (read with wall_treatments)
   std::vector<std::string> wall_treatments;
   std::string own_walls;
   // case.json "open_wall_treatments": {treatment: why it misses the tolerance today}; those
