@@ -24,9 +24,10 @@ namespace {
 
 // A wall particle's depth behind the wall surface and the unit normal towards the fluid
 // (boundary/wall_surface.hpp), on the particle just added.
-void set_surface_geometry(Particles& P, double depth, const double n[3]) {
+void set_surface_geometry(Particles& P, double depth, const double n[3], bool corner = false) {
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   P.add_field(WallSurfaceFields::depth, WallSurfaceFields::owner).back() = depth;
+  P.add_int_field(WallSurfaceFields::corner, WallSurfaceFields::owner).back() = corner ? 1 : 0;
   const char* names[3] = {BodyFields::wall_nx, BodyFields::wall_ny, BodyFields::wall_nz};
   for (int a = 0; a < 3; ++a) P.add_field(names[a], BodyFields::owner).back() = len > 0 ? n[a] / len : 0.0;
 }
@@ -220,7 +221,7 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
           n[a] = std::clamp(q[a], c.lo[a], c.hi[a]) - q[a];
           d2 += n[a] * n[a];
         }
-        set_surface_geometry(P, std::sqrt(d2), n);
+        set_surface_geometry(P, std::sqrt(d2), n, outside_axes > 1);
       }
     });
   }

@@ -1,43 +1,15 @@
 #include "boundary/ghost_wall.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "boundary/body_fields.hpp"
+#include "boundary/mirror_mls.hpp"
 #include "boundary/wall_surface.hpp"
 #include "core/kernels.hpp"
 
 namespace geosph {
-
-namespace {
-
-// A fluid neighbour of the mirror point: its index, W_mf V_f and the basis b_f without its leading 1.
-struct MirrorNeighbour {
-  std::uint32_t f;
-  double wv, b[3];
-};
-
-// The MLS weights' coefficients c (A c = e_1), or false where A is near singular (take Shepard's).
-bool mls_coefficients(const std::vector<MirrorNeighbour>& nb, int dim, double c[4]) {
-  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  for (const auto& q : nb) {
-    const double b[4] = {1.0, q.b[0], q.b[1], q.b[2]};
-    for (int r = 0; r <= dim; ++r)
-      for (int s = 0; s <= dim; ++s) A(r, s) += b[r] * b[s] * q.wv;
-  }
-  for (int r = dim + 1; r < 4; ++r) A(r, r) = 1.0;  // 2D: the z row is not part of the fit
-  const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
-  // rcond of a full support with unit Shepard sum is of order 0.1 (the second moments of the kernel
-  // in units of h^2); 1e-3 of that marks a support that does not span the dimension
-  if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-4)) return false;
-  const Eigen::Vector4d x = ldlt.solve(Eigen::Vector4d::UnitX());
-  for (int r = 0; r < 4; ++r) c[r] = r <= dim ? x[r] : 0.0;
-  return true;
-}
-
-}  // namespace
 
 void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
                         const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz,

@@ -1,6 +1,8 @@
 #include "boundary/soil_wall.hpp"
 
 #include "boundary/body_fields.hpp"
+#include "boundary/mirror_mls.hpp"
+#include "boundary/wall_surface.hpp"
 #include "coupling/seepage_fields.hpp"
 
 #include <algorithm>
@@ -13,7 +15,79 @@
 
 namespace geosph {
 
-SoilWalls::SoilWalls(const Scene& scene) : scene_(scene), no_slip_(scene.walls.slip == "no_slip") {}
+namespace {
+
+// Ghost walls (walls.type "ghost"): the soil's values at the mirror point x_m = x_w + 2 d n of wall
+// particle w (boundary/ghost_wall.hpp), by first-order MLS over the soil there, each bounded by the
+// neighbours' values, written to w's stress s and ghost velocity wv:
+//   free slip: sigma_w = R sigma(x_m) R^T - rho' g.(x_w - x_m) I,   v_w = v_wall + R (v(x_m) - v_wall),
+//   no slip:   sigma_w = sigma(x_m)       - rho' g.(x_w - x_m) I,   v_w = 2 v_wall - v(x_m),
+// R the reflection (boundary/mirror_mls.hpp). At a face with normal along axis a, R sigma R^T reverses
+// the shear components sigma_ab (b != a) and keeps the normal stresses and the tangential shear
+// sigma_bc (b, c != a); through a 2D corner (R = -I) nothing changes sign, at a 3D edge only the two
+// shears with the edge's axis keep theirs. No slip keeps every shear, so the wall shears the soil as the
+// dummy walls do. The isotropic hydrostatic step is the dummy walls' (Adami eq. 27 on the mean stress),
+// taken over the distance x_w - x_m; rho' the soil density the dummy sums use (buoyant when saturated).
+// A clamping block's particles keep their own velocity. False when the soil fills less than half
+// the support at x_m (kMinMirrorSupport).
+// A mirror point whose Shepard sum sum_k W_mk V_k (1 in a full support) is below this lies at the free
+// surface or in a tail a particle or two thick; the wall particle keeps its dummy value there.
+constexpr double kMinMirrorSupport = 0.5;
+
+template <class Kernel, class EffectiveDensity>
+bool mirror_ghost(const Particles& P, const CellList& cells, const Kernel& kernel, std::size_t w, double depth,
+                  const double n[3], bool corner, bool no_slip, bool clamp, const std::array<double, 3>& g, int ncomp,
+                  double* const* s, double* const* wv, const EffectiveDensity& rho_eff, double inv_h,
+                  std::vector<MirrorNeighbour>& nb) {
+  const double xw[3] = {P.x[w], P.y[w], P.z[w]};
+  const double xm[3] = {xw[0] + 2 * depth * n[0], xw[1] + 2 * depth * n[1], xw[2] + 2 * depth * n[2]};
+  nb.clear();
+  double sv = 0;
+  cells.for_each_near_point(P, xm[0], xm[1], xm[2], [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
+    if (P.kind[k] != Kind::Soil) return;
+    const double W = kernel.W(std::sqrt(r2));
+    nb.push_back({k, W * P.m[k] / P.rho[k], {-dx * inv_h, -dy * inv_h, -dz * inv_h}});  // b = (x_k - x_m) / h
+    sv += nb.back().wv;
+  });
+  if (!(sv >= kMinMirrorSupport)) return false;
+  double c[4] = {0, 0, 0, 0};
+  if (!mls_coefficients(nb, P.dim, c)) c[0] = 1.0 / sv;  // Shepard
+  // the values: stress components, velocity, density
+  constexpr int kValues = 10;
+  double val[kValues] = {}, lo[kValues], hi[kValues];
+  for (int q = 0; q < kValues; ++q) { lo[q] = INFINITY; hi[q] = -INFINITY; }
+  for (const auto& q : nb) {
+    const double phi = (c[0] + c[1] * q.b[0] + c[2] * q.b[1] + c[3] * q.b[2]) * q.wv;
+    const std::size_t k = q.f;
+    double v[kValues] = {0, 0, 0, 0, 0, 0, P.vx[k], P.vy[k], P.vz[k], rho_eff(k)};
+    for (int comp = 0; comp < ncomp; ++comp) v[comp] = s[comp][k];
+    for (int r = 0; r < kValues; ++r) {
+      val[r] += phi * v[r];
+      lo[r] = std::min(lo[r], v[r]);
+      hi[r] = std::max(hi[r], v[r]);
+    }
+  }
+  // bounded by the neighbours' values: a mirror point at the free surface would extrapolate the fit
+  for (int r = 0; r < kValues; ++r) val[r] = std::clamp(val[r], lo[r], hi[r]);
+  const double xz = ncomp == 6 ? val[4] : 0.0, yz = ncomp == 6 ? val[5] : 0.0;
+  Eigen::Matrix3d t;
+  t << val[0], val[3], xz, val[3], val[1], yz, xz, yz, val[2];
+  const Eigen::Matrix3d R = mirror_reflection(n, corner);
+  if (!no_slip) t = R * t * R.transpose();
+  const double hydro = val[9] * (g[0] * (xw[0] - xm[0]) + g[1] * (xw[1] - xm[1]) + g[2] * (xw[2] - xm[2]));
+  s[0][w] = t(0, 0) - hydro; s[1][w] = t(1, 1) - hydro; s[2][w] = t(2, 2) - hydro;
+  s[3][w] = t(0, 1);
+  if (ncomp == 6) { s[4][w] = t(0, 2); s[5][w] = t(1, 2); }
+  const Eigen::Vector3d vwall(P.vx[w], P.vy[w], P.vz[w]), vm(val[6], val[7], val[8]);
+  const Eigen::Vector3d u = clamp ? vwall : no_slip ? Eigen::Vector3d(2.0 * vwall - vm) : Eigen::Vector3d(vwall + R * (vm - vwall));
+  for (int a = 0; a < 3; ++a) wv[a][w] = u[a];
+  return true;
+}
+
+}  // namespace
+
+SoilWalls::SoilWalls(const Scene& scene)
+    : scene_(scene), no_slip_(scene.walls.slip == "no_slip"), ghost_(scene.walls.type == "ghost") {}
 
 void SoilWalls::allocate(Particles& P) const {
   for (const char* f : {SoilWallFields::vx, SoilWallFields::vy, SoilWallFields::vz}) P.add_field(f, SoilWallFields::owner);
@@ -77,7 +151,14 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         const double rho_w = scene_.two_phase() ? scene_.materials.front().density : 0.0;
         mark_read_walls(P, cells);
         const double rho0_far = scene_.soils.front().density;
-#pragma omp parallel for schedule(dynamic, 256)
+        const double* depth = ghost_ ? P.find(WallSurfaceFields::depth) : nullptr;
+        const std::int32_t* corner = P.find_int(WallSurfaceFields::corner);
+        const double inv_h = 1.0 / scene_.h();
+        const auto effective_density = [&](std::size_t k) { return por ? P.rho[k] - (1.0 - por[k]) * rho_w : P.rho[k]; };
+#pragma omp parallel
+        {
+        std::vector<MirrorNeighbour> nb;
+#pragma omp for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
           if (P.kind[w] != Kind::DummyWall) continue;
           const auto far_wall = [&] {  // in no particle's support: the values of a wall without soil around
@@ -103,7 +184,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             const double W = kernel.W(std::sqrt(r2));
             sw += W;
             for (int c = 0; c < ncomp; ++c) ss[c] += s[c][k] * W;
-            const double rw = (por ? P.rho[k] - (1.0 - por[k]) * rho_w : P.rho[k]) * W;
+            const double rw = effective_density(k) * W;
             sr[0] += rw * dx; sr[1] += rw * dy; sr[2] += rw * dz;
             sv[0] += P.vx[k] * W; sv[1] += P.vy[k] * W; sv[2] += P.vz[k] * W;
             sd[0] += W * dx; sd[1] += W * dy; sd[2] += W * dz;
@@ -118,14 +199,21 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             for (int a = 0; a < 3; ++a) wv[a][w] = 0;
             continue;
           }
-          const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
+          const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
+          const bool clamp = block && block[w] > 0 && no_slip;  // the embedded material does not move
           const bool shaped = wn[0] && (wn[0][w] != 0 || wn[1][w] != 0 || wn[2][w] != 0);
-          if (shaped && !no_slip) {
-            // a wall of any shape (walls.boundaries): the extrapolated stress mirrored across the wall's
-            // tangent plane, H sigma H with H = I - 2 n n^T, which reverses the normal-tangential shear
-            // and keeps the rest, so the mean of soil and ghost stress has no shear traction on the wall
-            const Eigen::Vector3d nn(wn[0][w], wn[1][w], wn[2][w]);
-            const Eigen::Matrix3d H = Eigen::Matrix3d::Identity() - 2.0 * nn * nn.transpose();
+          const double nw[3] = {shaped ? wn[0][w] : 0.0, shaped ? wn[1][w] : 0.0, shaped ? wn[2][w] : 0.0};
+          const bool at_corner = corner && corner[w];
+          if (depth && mirror_ghost(P, cells, kernel, w, depth[w], nw, at_corner, no_slip, clamp, g, ncomp, s, wv,
+                                    effective_density, inv_h, nb))
+            continue;  // the ghost values at the mirror point; else the dummy values below
+          const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
+          if (shaped && !no_slip && !at_corner) {
+            // a wall of any shape (walls.boundaries, and the faces of a ghost-wall scene's containers,
+            // which carry their normals): the extrapolated stress mirrored across the wall's tangent plane,
+            // H sigma H with H = I - 2 n n^T, which reverses the normal-tangential shear and keeps the
+            // rest, so the mean of soil and ghost stress has no shear traction on the wall
+            const Eigen::Matrix3d H = mirror_reflection(nw, false);
             Eigen::Matrix3d t;
             t << ss[0], ss[3], ncomp == 6 ? ss[4] : 0.0, ss[3], ss[1], ncomp == 6 ? ss[5] : 0.0,
                 ncomp == 6 ? ss[4] : 0.0, ncomp == 6 ? ss[5] : 0.0, ss[2];
@@ -137,9 +225,8 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
             for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
           }
-          const double vw[3] = {P.vx[w], P.vy[w], P.vz[w]};
           const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
-          if (block && block[w] > 0 && no_slip) {  // clamp: the embedded material does not move
+          if (clamp) {
             for (int a = 0; a < 3; ++a) wv[a][w] = vw[a];
           } else if (no_slip) {
             for (int a = 0; a < 3; ++a) wv[a][w] = 2.0 * vw[a] - vs[a];
@@ -151,12 +238,13 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             // (a shaped wall's own surface normal where it has one)
             const double len = std::sqrt(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]);
             double nrm[3] = {0, 0, 0}, vn = 0;
-            if (shaped)
+            if (shaped && !at_corner)
               for (int a = 0; a < 3; ++a) { nrm[a] = wn[a][w]; vn += (vw[a] - vs[a]) * nrm[a]; }
             else if (len > 0)
               for (int a = 0; a < 3; ++a) { nrm[a] = -sd[a] / len; vn += (vw[a] - vs[a]) * nrm[a]; }
             for (int a = 0; a < 3; ++a) wv[a][w] = vs[a] + 2.0 * vn * nrm[a];
           }
+        }
         }
       },
       make_kernel(scene_.kernel, scene_.dim, scene_.h()));

@@ -21,6 +21,10 @@
 // contact (coupling/soil_structure_contact.hpp). Before, the floor ghosts under a wall carried the
 // extrapolated passive stress and took ~20% of the thrust off the wall in the bottom 0.1 H
 // (rankine_passive).
+// Ghost walls (walls.type "ghost"): each wall particle takes instead the soil's stress and velocity at its
+// mirror point inside the soil, mirrored across the wall for free slip (soil_wall.cpp, mirror_ghost,
+// states which components change sign); one whose mirror point has no soil near it keeps the dummy
+// value above.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -56,7 +60,7 @@ class SoilWalls {
   // update() gives the same values to a marked wall its own neighbour query finds in no support.
   void mark_read_walls(const Particles& P, const CellList& cells) const;
   const Scene& scene_;
-  bool no_slip_;
+  bool no_slip_, ghost_;  // ghost_: walls.type "ghost", the values at each wall particle's mirror point
   mutable std::vector<std::uint8_t> read_;
   mutable long marked_build_ = -1;  // the pair list build read_ was marked from, -1 for none
 };

@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "boundary/body_fields.hpp"
 #include "boundary/geometry.hpp"
 #include "boundary/ghost_wall.hpp"
+#include "boundary/mirror_mls.hpp"
+#include "boundary/soil_wall.hpp"
 #include "boundary/wall_surface.hpp"
 #include "core/cell_list.hpp"
+#include "soil/soil_fields.hpp"
 #include "test_scenes.hpp"
 
 using namespace geosph;
@@ -92,9 +96,128 @@ TEST(GhostWall, LinearFieldsMirrorExactly) {
   EXPECT_EQ(corner, L * L);  // the L x L corner block
 }
 
-// Ghost walls are for fluids: a soil scene with them is rejected naming walls.type.
-TEST(GhostWall, SoilSceneRejected) {
+// Soil ghost walls: with a linear isotropic stress, a uniform shear stress and a linear velocity in the
+// soil, every wall particle whose mirror point has a full support carries the stress at its own depth
+// (the mirror value plus the hydrostatic step) with the shear reversed at a free-slip face and kept
+// through a corner (the double mirror) and at a no-slip wall, the tangential velocity kept and the
+// normal one reversed at a free-slip face, and the opposite velocity through a corner and with no slip.
+namespace {
+
+struct SoilGhostCheck {
+  int floor = 0, corner = 0, side = 0;
+};
+
+SoilGhostCheck check_soil_ghosts(const std::string& slip) {
   auto j = geosph::test::soil_column_scene();
   j["walls"]["type"] = "ghost";
-  test::expect_scene_error(j, "walls.type", "soil needs dummy walls");
+  j["walls"]["slip"] = slip;
+  const Scene s = parse_scene(j, "ok.json");
+  Particles P = build_particles(s);
+  const double rho0 = 2650, g = 9.81, H = 0.1, tau = 300.0, p_top = 100.0;
+  const double ux = 0.02, uy = -0.01;  // velocity gradients [1/s]
+  const auto p_at = [&](double y) { return p_top + rho0 * g * (H - y); };
+  auto& sxx = P.field(SoilFields::xx);
+  auto& syy = P.field(SoilFields::yy);
+  auto& szz = P.field(SoilFields::zz);
+  auto& sxy = P.add_field(SoilFields::xy, SoilFields::owner);  // the soil forces create it (soil/soil_forces.cpp)
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    P.rho[i] = rho0;
+    P.m[i] = rho0 * s.dx * s.dx;
+    sxx[i] = syy[i] = szz[i] = -p_at(P.y[i]);
+    sxy[i] = tau;
+    P.vx[i] = ux * P.y[i] + 0.001;
+    P.vy[i] = uy * P.x[i] + 0.002 * P.y[i];
+  }
+  CellList cells;
+  EXPECT_EQ(cells.build(P, s.domain, s.support()), -1);
+  SoilWalls walls(s);
+  walls.allocate(P);
+  walls.update(P, cells, {0, -g, 0});
+  const auto& wvx = P.field(SoilWallFields::vx);
+  const auto& wvy = P.field(SoilWallFields::vy);
+  const bool free = slip == "free_slip";
+  const double reach = s.support();
+  SoilGhostCheck n;
+  for (std::size_t w = 0; w < P.size(); ++w) {
+    if (P.kind[w] != Kind::DummyWall) continue;
+    const double x = P.x[w], y = P.y[w];
+    const bool under_floor = y < 0 && x > reach && x < 0.2 - reach;
+    const bool in_corner = x < 0 && y < 0;
+    const bool at_side = x < 0 && y > 0 && y < H - reach;
+    if (!under_floor && !in_corner && !at_side) continue;
+    // the nearest soil particle, at (dx/2, dx/2) from the corner: a wall farther than the support from it
+    // is in no support, and keeps the values of a wall without soil around
+    const double gap_x = x < 0 ? 0.5 * s.dx - x : 0.0, gap_y = y < 0 ? 0.5 * s.dx - y : 0.0;
+    if (std::hypot(gap_x, gap_y) >= reach) continue;
+    const double xm = in_corner || at_side ? -x : x, ym = in_corner || under_floor ? -y : y;  // the mirror point
+    const double vxm = ux * ym + 0.001, vym = uy * xm + 0.002 * ym;
+    const std::string at = "x = " + std::to_string(x) + ", y = " + std::to_string(y);
+    const double tol = 1e-9 * rho0 * g * H;
+    EXPECT_NEAR(sxx[w], -p_at(y), tol) << at;
+    EXPECT_NEAR(syy[w], -p_at(y), tol) << at;
+    EXPECT_NEAR(szz[w], -p_at(y), tol) << at;
+    // the shear reverses at a free-slip face (one reflection), twice through a corner
+    EXPECT_NEAR(sxy[w], free && !in_corner ? -tau : tau, 1e-9 * tau) << at;
+    double ex = -vxm, ey = -vym;  // opposite velocity: no slip, and the free-slip corner (R = -I)
+    if (free && under_floor) ex = vxm;
+    if (free && at_side) ey = vym;
+    EXPECT_NEAR(wvx[w], ex, 1e-12) << at;
+    EXPECT_NEAR(wvy[w], ey, 1e-12) << at;
+    (under_floor ? n.floor : in_corner ? n.corner : n.side)++;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(GhostWall, SoilStressAndVelocityMirrorFreeSlip) {
+  const auto n = check_soil_ghosts("free_slip");
+  EXPECT_GT(n.floor, 0);
+  EXPECT_GT(n.corner, 0);
+  EXPECT_GT(n.side, 0);
+}
+
+TEST(GhostWall, SoilStressAndVelocityMirrorNoSlip) {
+  const auto n = check_soil_ghosts("no_slip");
+  EXPECT_GT(n.floor, 0);
+  EXPECT_GT(n.corner, 0);
+  EXPECT_GT(n.side, 0);
+}
+
+// The reflection: a face's R = I - 2 n n^T, a 2D corner's -I in the plane, a 3D edge's two reversed axes.
+TEST(GhostWall, MirrorReflections) {
+  const double up[3] = {0, 1, 0}, diag2[3] = {0.6, 0.8, 0}, edge[3] = {0.6, 0, 0.8};
+  const Eigen::Matrix3d face = mirror_reflection(up, false);
+  EXPECT_EQ(face, Eigen::Vector3d(1, -1, 1).asDiagonal().toDenseMatrix());
+  EXPECT_EQ(mirror_reflection(diag2, true), Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix());
+  EXPECT_EQ(mirror_reflection(edge, true), Eigen::Vector3d(-1, 1, -1).asDiagonal().toDenseMatrix());
+  // an inclined wall: R reverses the normal and keeps the tangent
+  const double c = std::sqrt(0.5), n45[3] = {c, c, 0};
+  const Eigen::Matrix3d R = mirror_reflection(n45, false);
+  EXPECT_NEAR((R * Eigen::Vector3d(c, c, 0) + Eigen::Vector3d(c, c, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((R * Eigen::Vector3d(-c, c, 0) - Eigen::Vector3d(-c, c, 0)).norm(), 0.0, 1e-15);
+}
+
+// Ghost walls carry no porosity: a two-phase scene with them is rejected naming walls.type; Morris and
+// repulsive walls stay fluid-only.
+TEST(GhostWall, TwoPhaseSceneRejected) {
+  auto j = json::parse(R"({
+    "name": "tp", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-0.1, -0.1], "max": [0.3, 0.3]},
+    "gravity": [0, -9.81], "time": {"end": 0.01},
+    "materials": {
+      "water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20},
+      "sand": {"model": "drucker_prager", "density": 1590, "young_modulus": 1e7, "poisson_ratio": 0.3,
+               "friction_angle": 30, "porosity": 0.4, "hydraulic_conductivity": 1e-3}
+    },
+    "bodies": [
+      {"material": "water", "shape": "box", "min": [0, 0], "max": [0.1, 0.1]},
+      {"material": "sand", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "initial": "geostatic"}
+    ],
+    "walls": {"type": "ghost", "containers": [{"min": [0, 0], "max": [0.1, 0.2], "open": ["top"]}]}
+  })");
+  test::expect_scene_error(j, "walls.type", "two-phase scene needs \"dummy\" walls");
+  j["walls"]["type"] = "dummy";
+  EXPECT_NO_THROW(parse_scene(j, "ok.json"));
 }

@@ -1,0 +1,31 @@
+// What ghost walls of every phase share (boundary/ghost_wall.hpp for fluids, boundary/soil_wall.hpp for
+// soil): the first-order moving-least-squares weights at a wall particle's mirror point (Marrone et al.
+// 2011, Comput. Methods Appl. Mech. Engrg. 200, Sec. 3.1), and the reflection that maps the material's
+// tensors and vectors at the mirror point onto the wall particle.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace geosph {
+
+// A neighbour f of the mirror point x_m: its index, W_mf V_f and the basis b_f = (x_f - x_m) / h.
+struct MirrorNeighbour {
+  std::uint32_t f;
+  double wv, b[3];
+};
+
+// The coefficients c of phi(x_m) = sum_f (c . (1, b_f)) W_mf V_f phi_f (A c = e_1 with
+// A = sum_f (1, b_f)(1, b_f)^T W_mf V_f), which reproduce linear fields; false where A is near singular
+// (too few neighbours to span the dimension: take Shepard's c = (1 / sum_f W_mf V_f, 0, ...)).
+bool mls_coefficients(const std::vector<MirrorNeighbour>& nb, int dim, double c[4]);
+
+// The reflection R that carries the material at the mirror point onto the wall particle: across the
+// tangent plane at a face or a shaped wall, R = I - 2 n n^T (n the unit normal); through the corner or
+// edge at a box corner (corner = true; n points from the particle to the corner), the product of the
+// face reflections of the axes n has components on, R = diag(-1 where n_a != 0, else 1) - the double
+// (or triple) mirror. A vector maps as R v, a tensor as R sigma R^T.
+Eigen::Matrix3d mirror_reflection(const double n[3], bool corner);
+
+}  // namespace geosph
