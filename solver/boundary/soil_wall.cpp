@@ -17,6 +17,10 @@ namespace geosph {
 
 namespace {
 
+// A mirror point whose Shepard sum sum_k W_mk V_k (1 in a full support) is below this lies at the free
+// surface or in a tail a particle or two thick; the wall particle keeps its dummy value there.
+constexpr double kMinMirrorSupport = 0.5;
+
 // Ghost walls (walls.type "ghost"): the soil's values at the mirror point x_m = x_w + 2 d n of wall
 // particle w (boundary/ghost_wall.hpp), by first-order MLS over the soil there, each bounded by the
 // neighbours' values, written to w's stress s and ghost velocity wv:
@@ -30,10 +34,6 @@ namespace {
 // taken over the distance x_w - x_m; rho' the soil density the dummy sums use (buoyant when saturated).
 // A clamping block's particles keep their own velocity. False when the soil fills less than half
 // the support at x_m (kMinMirrorSupport).
-// A mirror point whose Shepard sum sum_k W_mk V_k (1 in a full support) is below this lies at the free
-// surface or in a tail a particle or two thick; the wall particle keeps its dummy value there.
-constexpr double kMinMirrorSupport = 0.5;
-
 template <class Kernel, class EffectiveDensity>
 bool mirror_ghost(const Particles& P, const CellList& cells, const Kernel& kernel, std::size_t w, double depth,
                   const double n[3], bool corner, bool no_slip, bool clamp, const std::array<double, 3>& g, int ncomp,
