@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "boundary/body_fields.hpp"
-#include "boundary/mirror_mls.hpp"
 #include "boundary/wall_surface.hpp"
 #include "core/kernels.hpp"
 
@@ -51,23 +50,11 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
               continue;
             }
             const TaitEos& e = eos[mat];
-            double c[4] = {0, 0, 0, 0};
-            if (!mls_coefficients(nb, dim, c)) c[0] = 1.0 / sv;  // Shepard
-            double pm = 0, rm = 0, vm[3] = {0, 0, 0};
-            double lo[5] = {INFINITY, INFINITY, INFINITY, INFINITY, INFINITY}, hi[5] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
-            for (const auto& q : nb) {
-              const double phi = (c[0] + c[1] * q.b[0] + c[2] * q.b[1] + c[3] * q.b[2]) * q.wv;
-              const double v[5] = {P.p[q.f], P.rho[q.f], P.vx[q.f], P.vy[q.f], P.vz[q.f]};
-              pm += phi * v[0];
-              rm += phi * v[1];
-              vm[0] += phi * v[2]; vm[1] += phi * v[3]; vm[2] += phi * v[4];
-              for (int k = 0; k < 5; ++k) { lo[k] = std::min(lo[k], v[k]); hi[k] = std::max(hi[k], v[k]); }
-            }
-            // bounded by the neighbours' values: a mirror point beyond the fluid (a splash, the free
-            // surface) would otherwise extrapolate the fit
-            pm = std::clamp(pm, lo[0], hi[0]);
-            rm = std::clamp(rm, lo[1], hi[1]);
-            for (int k = 0; k < 3; ++k) vm[k] = std::clamp(vm[k], lo[2 + k], hi[2 + k]);
+            double fit[5];  // p, rho, v at the mirror point
+            bounded_mls<5>(nb, dim, sv, [&](std::uint32_t f, double v[5]) {
+              v[0] = P.p[f]; v[1] = P.rho[f]; v[2] = P.vx[f]; v[3] = P.vy[f]; v[4] = P.vz[f];
+            }, fit);
+            const double pm = fit[0], rm = fit[1], vm[3] = {fit[2], fit[3], fit[4]};
             P.p[w] = pm + rm * (g[0] * (xw[0] - xm[0]) + g[1] * (xw[1] - xm[1]) + g[2] * (xw[2] - xm[2]));
             P.rho[w] = e.density(P.p[w]);
             P.m[w] = P.rho[w] * volume;

@@ -21,17 +21,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "boundary/mirror_mls.hpp"  // ghost_mirror_point
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "fluid/equation_of_state.hpp"
 #include "io/scene.hpp"
 
 namespace geosph {
-
-// The mirror point of a wall particle at x with depth d behind the surface and unit normal n.
-inline std::array<double, 3> ghost_mirror_point(const double x[3], double depth, const double n[3]) {
-  return {x[0] + 2 * depth * n[0], x[1] + 2 * depth * n[1], x[2] + 2 * depth * n[2]};
-}
 
 // Writes p, rho, m of every dummy-kind wall particle whose mirror point has fluid within the kernel
 // support and, for no slip (wvx non-null), its ghost velocity into wvx, wvy, wvz; sets unmirrored[w] = 1

@@ -3,12 +3,20 @@
 // 2011, Comput. Methods Appl. Mech. Engrg. 200, Sec. 3.1), and the reflection that maps the material's
 // tensors and vectors at the mirror point onto the wall particle.
 #pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace geosph {
+
+// The mirror point of a wall particle at x with depth d behind the surface and unit normal n.
+inline std::array<double, 3> ghost_mirror_point(const double x[3], double depth, const double n[3]) {
+  return {x[0] + 2 * depth * n[0], x[1] + 2 * depth * n[1], x[2] + 2 * depth * n[2]};
+}
 
 // A neighbour f of the mirror point x_m: its index, W_mf V_f and the basis b_f = (x_f - x_m) / h.
 struct MirrorNeighbour {
@@ -20,6 +28,29 @@ struct MirrorNeighbour {
 // A = sum_f (1, b_f)(1, b_f)^T W_mf V_f), which reproduce linear fields; false where A is near singular
 // (too few neighbours to span the dimension: take Shepard's c = (1 / sum_f W_mf V_f, 0, ...)).
 bool mls_coefficients(const std::vector<MirrorNeighbour>& nb, int dim, double c[4]);
+
+// K values at the mirror point from its neighbours nb (sv = sum_f W_mf V_f > 0; values(f, v) writes
+// neighbour f's K values into v): the MLS estimate, Shepard's where the fit is singular, each bounded
+// by the neighbours' own values - a mirror point beyond the material (a splash, the free surface) would
+// otherwise extrapolate the fit.
+template <int K, class Values>
+void bounded_mls(const std::vector<MirrorNeighbour>& nb, int dim, double sv, const Values& values, double out[K]) {
+  double c[4] = {0, 0, 0, 0};
+  if (!mls_coefficients(nb, dim, c)) c[0] = 1.0 / sv;  // Shepard
+  double lo[K], hi[K];
+  for (int k = 0; k < K; ++k) { out[k] = 0; lo[k] = INFINITY; hi[k] = -INFINITY; }
+  for (const auto& q : nb) {
+    const double phi = (c[0] + c[1] * q.b[0] + c[2] * q.b[1] + c[3] * q.b[2]) * q.wv;
+    double v[K];
+    values(q.f, v);
+    for (int k = 0; k < K; ++k) {
+      out[k] += phi * v[k];
+      lo[k] = std::min(lo[k], v[k]);
+      hi[k] = std::max(hi[k], v[k]);
+    }
+  }
+  for (int k = 0; k < K; ++k) out[k] = std::clamp(out[k], lo[k], hi[k]);
+}
 
 // The reflection R that carries the material at the mirror point onto the wall particle: across the
 // tangent plane at a face or a shaped wall, R = I - 2 n n^T (n the unit normal); through the corner or

@@ -40,7 +40,7 @@ bool mirror_ghost(const Particles& P, const CellList& cells, const Kernel& kerne
                   double* const* s, double* const* wv, const EffectiveDensity& rho_eff, double inv_h,
                   std::vector<MirrorNeighbour>& nb) {
   const double xw[3] = {P.x[w], P.y[w], P.z[w]};
-  const double xm[3] = {xw[0] + 2 * depth * n[0], xw[1] + 2 * depth * n[1], xw[2] + 2 * depth * n[2]};
+  const auto xm = ghost_mirror_point(xw, depth, n);
   nb.clear();
   double sv = 0;
   cells.for_each_near_point(P, xm[0], xm[1], xm[2], [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
@@ -50,25 +50,13 @@ bool mirror_ghost(const Particles& P, const CellList& cells, const Kernel& kerne
     sv += nb.back().wv;
   });
   if (!(sv >= kMinMirrorSupport)) return false;
-  double c[4] = {0, 0, 0, 0};
-  if (!mls_coefficients(nb, P.dim, c)) c[0] = 1.0 / sv;  // Shepard
   // the values: stress components, velocity, density
-  constexpr int kValues = 10;
-  double val[kValues] = {}, lo[kValues], hi[kValues];
-  for (int q = 0; q < kValues; ++q) { lo[q] = INFINITY; hi[q] = -INFINITY; }
-  for (const auto& q : nb) {
-    const double phi = (c[0] + c[1] * q.b[0] + c[2] * q.b[1] + c[3] * q.b[2]) * q.wv;
-    const std::size_t k = q.f;
-    double v[kValues] = {0, 0, 0, 0, 0, 0, P.vx[k], P.vy[k], P.vz[k], rho_eff(k)};
-    for (int comp = 0; comp < ncomp; ++comp) v[comp] = s[comp][k];
-    for (int r = 0; r < kValues; ++r) {
-      val[r] += phi * v[r];
-      lo[r] = std::min(lo[r], v[r]);
-      hi[r] = std::max(hi[r], v[r]);
-    }
-  }
-  // bounded by the neighbours' values: a mirror point at the free surface would extrapolate the fit
-  for (int r = 0; r < kValues; ++r) val[r] = std::clamp(val[r], lo[r], hi[r]);
+  double val[10];
+  bounded_mls<10>(nb, P.dim, sv, [&](std::uint32_t k, double v[10]) {
+    for (int comp = 0; comp < 6; ++comp) v[comp] = comp < ncomp ? s[comp][k] : 0.0;
+    v[6] = P.vx[k]; v[7] = P.vy[k]; v[8] = P.vz[k];
+    v[9] = rho_eff(k);
+  }, val);
   const double xz = ncomp == 6 ? val[4] : 0.0, yz = ncomp == 6 ? val[5] : 0.0;
   Eigen::Matrix3d t;
   t << val[0], val[3], xz, val[3], val[1], yz, xz, yz, val[2];

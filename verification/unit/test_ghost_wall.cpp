@@ -202,21 +202,13 @@ TEST(GhostWall, MirrorReflections) {
 // Ghost walls carry no porosity: a two-phase scene with them is rejected naming walls.type; Morris and
 // repulsive walls stay fluid-only.
 TEST(GhostWall, TwoPhaseSceneRejected) {
-  auto j = json::parse(R"({
-    "name": "tp", "dimension": 2, "dx": 0.01,
-    "domain": {"min": [-0.1, -0.1], "max": [0.3, 0.3]},
-    "gravity": [0, -9.81], "time": {"end": 0.01},
-    "materials": {
-      "water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20},
-      "sand": {"model": "drucker_prager", "density": 1590, "young_modulus": 1e7, "poisson_ratio": 0.3,
-               "friction_angle": 30, "porosity": 0.4, "hydraulic_conductivity": 1e-3}
-    },
-    "bodies": [
-      {"material": "water", "shape": "box", "min": [0, 0], "max": [0.1, 0.1]},
-      {"material": "sand", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "initial": "geostatic"}
-    ],
-    "walls": {"type": "ghost", "containers": [{"min": [0, 0], "max": [0.1, 0.2], "open": ["top"]}]}
-  })");
+  // the soil column made saturated: pore water in the soil's box, and the sand's porosity and conductivity
+  auto j = geosph::test::soil_column_scene();
+  j["walls"]["type"] = "ghost";
+  j["materials"]["water"] = json::parse(R"({"model": "tait_fluid", "density": 1000, "sound_speed": 20})");
+  j["materials"]["sand"]["porosity"] = 0.4;
+  j["materials"]["sand"]["hydraulic_conductivity"] = 1e-3;
+  j["bodies"].push_back(json::parse(R"({"material": "water", "shape": "box", "min": [0, 0], "max": [0.2, 0.1]})"));
   test::expect_scene_error(j, "walls.type", "two-phase scene needs \"dummy\" walls");
   j["walls"]["type"] = "dummy";
   EXPECT_NO_THROW(parse_scene(j, "ok.json"));
