@@ -2,9 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "analytical/poiseuille.hpp"
+#include "analytical/sheet_pile_seepage.hpp"
 #include "analytical/terzaghi_consolidation.hpp"
+#include "harness/case_config.hpp"
 
 using geosph::reference::PoiseuilleStartup;
 
@@ -63,4 +69,78 @@ TEST(Terzaghi, StepLoadDegreeOfConsolidation) {
   EXPECT_NEAR(terzaghi_load(c, 0.1), 625.0, 1e-9);
   EXPECT_THROW(terzaghi_spec(1.0, -1e-2, 9810.0, 2.5e5, 0.4, 2.5e6, 1250.0, 0.2), std::invalid_argument);
   EXPECT_THROW(terzaghi_excess_pressure(c, 1.5, 0.3), std::invalid_argument);
+}
+
+// Sheet-pile seepage (reference/analytical/sheet_pile_seepage): the GSL evaluation of the thin-pile
+// closed forms against every row of the tables derived for issue 18 (reference/analytical/
+// sheet_pile_seepage_analytical_*.csv, printed to 4-5 digits), and the finite-volume Laplace solver at
+// zero thickness on a wide domain against the closed forms. The solver's error is first order near
+// the pile's tip (the crack-tip singularity) and second order elsewhere: 1% of H at grid T/80.
+namespace {
+std::vector<std::vector<std::string>> csv_rows(const std::string& name) {
+  std::ifstream in(geosph::verify::default_data_dir() / "reference" / "analytical" / name);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) { header = false; continue; }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST(SheetPileSeepage, ClosedFormsMatchTheTables) {
+  using geosph::reference::ThinSheetPile;
+  const auto depth = csv_rows("sheet_pile_seepage_analytical_finite_depth.csv");
+  ASSERT_EQ(depth.size(), 11u);
+  for (const auto& r : depth) {
+    const double sT = std::stod(r[0]);
+    if (sT == 0) continue;  // the infinite-depth limit
+    const ThinSheetPile p{sT};
+    EXPECT_NEAR(p.discharge_over_kH(), std::stod(r[1]), 6e-5) << "s/T " << sT;
+    EXPECT_NEAR(p.exit_gradient_at_face_times_T_over_H() * sT, std::stod(r[2]), 6e-6) << "s/T " << sT;
+  }
+  int face = 0, exit = 0;
+  for (const auto& r : csv_rows("sheet_pile_seepage_analytical_profiles.csv")) {
+    if (r[0] != "0.5") continue;
+    const ThinSheetPile p{0.5};
+    const double c = std::stod(r[3]), v = std::stod(r[4]);
+    if (r[1] == "h_over_H_downstream_face") {
+      EXPECT_NEAR(p.downstream_face_head(c * 0.5), v, 6e-6) << "depth/s " << c;
+      ++face;
+    } else if (r[1] == "exit_gradient_times_s_over_H") {
+      EXPECT_NEAR(p.exit_gradient_times_T_over_H(c * 0.5) * 0.5, v, 6e-6) << "x/s " << c;
+      ++exit;
+    }
+  }
+  EXPECT_EQ(face, 11);
+  EXPECT_EQ(exit, 6);
+  // T -> infinity: Khosla's exit gradient H / (pi s) (the first table row)
+  EXPECT_NEAR(ThinSheetPile{1e-4}.exit_gradient_at_face_times_T_over_H() * 1e-4, 1.0 / M_PI, 1e-6);
+}
+
+TEST(SheetPileSeepage, LaplaceSolverReproducesTheThinPile) {
+  using namespace geosph::reference;
+  const double T = 1.0;
+  for (double sT : {0.3, 0.5}) {
+    const ThinSheetPile a{sT};
+    const SheetPileLaplace fd({T, 4.0 * T, sT * T, 0.0, T / 80});
+    EXPECT_NEAR(fd.discharge_over_kH(), a.discharge_over_kH(), 0.01 * a.discharge_over_kH()) << "s/T " << sT;
+    EXPECT_NEAR(fd.head(0.0, -sT * T - T / 160), 0.5, 1e-9);  // antisymmetry, half a cell below the tip
+    for (double d : {0.2, 0.5, 0.8})
+      EXPECT_NEAR(fd.head(1e-6, -d * sT * T), a.downstream_face_head(d * sT), 0.01) << "s/T " << sT << " depth/s " << d;
+    // head at one grid cell below the downstream surface: the exit gradient over that depth
+    for (double x : {0.1, 0.5})
+      EXPECT_NEAR(fd.head(x, -T / 160) / (T / 160), a.exit_gradient_times_T_over_H(x), 0.02) << "s/T " << sT << " x " << x;
+  }
+  // a thick pile lengthens the flow path: less discharge; the toe head stays H/2 by antisymmetry
+  const SheetPileLaplace thin({T, 2.0, 0.5, 0.0, T / 40}), thick({T, 2.0, 0.5, 0.2, T / 40});
+  EXPECT_LT(thick.discharge_over_kH(), thin.discharge_over_kH());
+  EXPECT_NEAR(thick.head(0.0, -0.5 - T / 80), 0.5, 1e-9);
+  EXPECT_THROW(SheetPileLaplace({T, 2.0, 0.5, 0.2, 0.03}), std::invalid_argument);
 }
