@@ -253,7 +253,7 @@ static void validate_structures(const Scene& s) {
 }
 
 // Fluid and soil meet only as a saturated soil and its pore water: every soil body in a scene with
-// a fluid must be saturated (porosity given) and lie inside a fluid body, which fills its pores;
+// a fluid must be saturated (porosity given) and lie inside the fluid bodies, which fill its pores;
 // one fluid material (the pore water).
 static void validate_two_phase(const Scene& s) {
   auto fail = [&](const std::string& field, const std::string& what) {
@@ -278,19 +278,19 @@ static void validate_two_phase(const Scene& s) {
       fail("materials." + m->name + ".porosity",
            "is missing: soil in a scene with a fluid is a saturated soil and needs its porosity in (0, 1) (and "
            "hydraulic_conductivity or grain_size)");
-    bool inside = false;
-    for (const auto& w : s.bodies) {
-      if (w.material != s.materials.front().name) continue;
-      bool in = true;
-      for (int a = 0; a < s.dim; ++a) in = in && w.lo[a] <= b.lo[a] + 1e-12 && w.hi[a] >= b.hi[a] - 1e-12;
-      if (in && (b.shape || w.shape)) {  // every soil particle lies in the water's shape
-        const auto water = shape_of(s, w);
-        for (const auto& p : geometry::fill_lattice(*shape_of(s, b), s.dx)) in = in && water->contains(p, s.dx);
-      }
-      inside = inside || in;
+    // every soil particle lies in a body of the water (several water bodies may share a layer: the
+    // two reservoirs of a sheet pile, each starting hydrostatic below its own level)
+    std::vector<geometry::ShapePtr> waters;
+    for (const auto& w : s.bodies)
+      if (w.material == s.materials.front().name) waters.push_back(shape_of(s, w));
+    bool inside = true;
+    for (const auto& p : geometry::fill_lattice(*shape_of(s, b), s.dx)) {
+      bool in = false;
+      for (const auto& w : waters) in = in || w->contains(p, s.dx);
+      inside = inside && in;
     }
     if (!inside)
-      fail(field, "the saturated soil body must lie inside a body of the fluid \"" + s.materials.front().name +
+      fail(field, "the saturated soil body must lie inside the bodies of the fluid \"" + s.materials.front().name +
                       "\" (its pore water)");
   }
 }

@@ -172,6 +172,19 @@ TEST(Seepage, BadInputIsRejectedWithTheField) {
     expect_error(b, "bodies[1]");
   }
   {
+    // two water bodies that together hold the soil (the reservoirs either side of a sheet pile, each
+    // hydrostatic below its own level) are its pore water; with a gap between them they are not
+    json b = j;
+    b["bodies"][0]["max"] = {0.1, 0.05};
+    json upper = b["bodies"][0];
+    upper["min"] = {0.0, 0.05};
+    upper["max"] = {0.1, 0.1};
+    b["bodies"].push_back(upper);
+    EXPECT_NO_THROW(parse_scene(b, "two_phase.json"));
+    b["bodies"][2]["min"] = {0.0, 0.07};
+    expect_error(b, "bodies[1]");
+  }
+  {
     json b = j;
     b["materials"].erase("water");
     b["bodies"].erase(0);
