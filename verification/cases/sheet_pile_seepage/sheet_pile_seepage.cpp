@@ -187,7 +187,14 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
     surf_thin.x.push_back(xs); surf_thin.y.push_back(thin.exit_gradient_times_T_over_H(xs * sT) * sT);
   }
   for (Series* sr : {&surf_sph, &surf_ref, &surf_thin}) rec.series.push_back(*sr);
-  for (Series* sr : {&up_face, &down_face, &up_fd, &down_fd}) rec.series.push_back(*sr);
+  for (Series* sr : {&up_face, &down_face, &up_fd, &down_fd}) {  // by depth
+    std::vector<std::size_t> o(sr->x.size());
+    for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+    std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return sr->x[a] < sr->x[b]; });
+    Series sorted = *sr;
+    for (std::size_t i = 0; i < o.size(); ++i) { sorted.x[i] = sr->x[o[i]]; sorted.y[i] = sr->y[o[i]]; }
+    rec.series.push_back(sorted);
+  }
   rec.series.push_back(thin_face);
   double e2 = 0;
   for (std::size_t i = 0; i < hs.size(); ++i) e2 += (hs[i] - hr[i]) * (hs[i] - hr[i]);
