@@ -70,6 +70,23 @@ std::string Csv::comment(const std::string& key) const {
   return "";
 }
 
+std::vector<std::vector<std::string>> read_csv_rows(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open reference data");
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  bool names = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (names) { names = false; continue; }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
 Csv read_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open reference data");

@@ -33,6 +33,8 @@ struct Csv {
   std::string file;
 };
 Csv read_csv(const std::string& path);
+// The rows of a CSV with text cells: '#' lines (the provenance header) and the column-name line skipped.
+std::vector<std::vector<std::string>> read_csv_rows(const std::string& path);
 
 struct Record;
 // For records of one case at successive spacings (coarse to fine): the observed order of the first

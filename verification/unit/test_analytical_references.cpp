@@ -2,8 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +9,7 @@
 #include "analytical/sheet_pile_seepage.hpp"
 #include "analytical/terzaghi_consolidation.hpp"
 #include "harness/case_config.hpp"
+#include "harness/metrics.hpp"
 
 using geosph::reference::PoiseuilleStartup;
 
@@ -78,19 +77,7 @@ TEST(Terzaghi, StepLoadDegreeOfConsolidation) {
 // the pile's tip (the crack-tip singularity) and second order elsewhere: 1% of H at grid T/80.
 namespace {
 std::vector<std::vector<std::string>> csv_rows(const std::string& name) {
-  std::ifstream in(geosph::verify::default_data_dir() / "reference" / "analytical" / name);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    rows.push_back(cells);
-  }
-  return rows;
+  return geosph::verify::read_csv_rows((geosph::verify::default_data_dir() / "reference" / "analytical" / name).string());
 }
 }  // namespace
 

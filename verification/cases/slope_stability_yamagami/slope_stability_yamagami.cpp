@@ -5,37 +5,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "analysis/strength_reduction.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
+#include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph::verify {
 
 namespace {
-
-// The rows of a reference CSV with text columns ('#' lines are its provenance header).
-std::vector<std::vector<std::string>> csv_rows(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open reference file");
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string c;
-    while (std::getline(ss, c, ',')) cells.push_back(c);
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 // Distance from p to the polyline (x, y).
 double distance_to(const std::vector<double>& x, const std::vector<double>& y, double px, double py) {
@@ -54,7 +34,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   // re-analysis gives 1.37, see the file's notes)
   double fs_sum = 0, fs_min = 1e300, fs_max = 0;
   int n_fs = 0;
-  for (const auto& r : csv_rows(cfg.reference_file(ctx, "experimental/slope_yamagami_ueta_1988_example1_fs.csv"))) {
+  for (const auto& r : read_csv_rows(cfg.reference_file(ctx, "experimental/slope_yamagami_ueta_1988_example1_fs.csv").string())) {
     if (r.size() < 7 || r[2].find("outlier") != std::string::npos) continue;
     const double lo = std::stod(r[5]), hi = std::stod(r[6]);
     fs_sum += 0.5 * (lo + hi);
@@ -64,7 +44,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   }
   const double fs_ref = fs_sum / n_fs;
   std::vector<double> sx, sy, gx, gy;
-  for (const auto& r : csv_rows(cfg.reference_file(ctx, "experimental/slope_yamagami_ueta_1988_example1_geometry.csv"))) {
+  for (const auto& r : read_csv_rows(cfg.reference_file(ctx, "experimental/slope_yamagami_ueta_1988_example1_geometry.csv").string())) {
     if (r.size() < 4) continue;
     (r[0] == "ground_surface" ? gx : sx).push_back(std::stod(r[2]));
     (r[0] == "ground_surface" ? gy : sy).push_back(std::stod(r[3]));
