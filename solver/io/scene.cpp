@@ -281,13 +281,21 @@ static void validate_two_phase(const Scene& s) {
     // every soil particle lies in a body of the water (several water bodies may share a layer: the
     // two reservoirs of a sheet pile, each starting hydrostatic below its own level)
     std::vector<geometry::ShapePtr> waters;
-    for (const auto& w : s.bodies)
-      if (w.material == s.materials.front().name) waters.push_back(shape_of(s, w));
-    bool inside = true;
-    for (const auto& p : geometry::fill_lattice(*shape_of(s, b), s.dx)) {
-      bool in = false;
-      for (const auto& w : waters) in = in || w->contains(p, s.dx);
-      inside = inside && in;
+    bool inside = false;  // a box of water holding a box of soil needs no lattice walk
+    for (const auto& w : s.bodies) {
+      if (w.material != s.materials.front().name) continue;
+      waters.push_back(shape_of(s, w));
+      bool in = !b.shape && !w.shape;
+      for (int a = 0; a < s.dim; ++a) in = in && w.lo[a] <= b.lo[a] + 1e-12 && w.hi[a] >= b.hi[a] - 1e-12;
+      inside = inside || in;
+    }
+    if (!inside) {
+      inside = true;
+      for (const auto& p : geometry::fill_lattice(*shape_of(s, b), s.dx)) {
+        bool in = false;
+        for (const auto& w : waters) in = in || w->contains(p, s.dx);
+        inside = inside && in;
+      }
     }
     if (!inside)
       fail(field, "the saturated soil body must lie inside the bodies of the fluid \"" + s.materials.front().name +

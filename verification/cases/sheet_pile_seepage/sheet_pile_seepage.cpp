@@ -141,11 +141,11 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   // every cell of pore water: its time-averaged head / H against the reference at its mean position
   std::vector<double> hs, hr;
   double toe = 0, toe_n = 0, exit_s = 0, exit_r = 0, exit_depth = 0, exit_n = 0;
-  Series up_face{"SPH", "simulation", "pile_faces", "depth / s", "h / H", {}, {}}, down_face = up_face;
-  Series up_fd{"finite volume, this geometry", "analytical", "pile_faces", "depth / s", "h / H", {}, {}}, down_fd = up_fd;
-  up_face.name = "SPH, upstream face"; down_face.name = "SPH, downstream face";
-  up_fd.name = "finite volume (this pile), upstream"; down_fd.name = "finite volume (this pile), downstream";
-  Series thin_face{"thin pile (Harr 1962), downstream", "analytical", "pile_faces", "depth / s", "h / H", {}, {}};
+  auto face = [](const char* name, const char* role) { return Series{name, role, "pile_faces", "depth / s", "h / H", {}, {}}; };
+  Series up_face = face("SPH, upstream face", "simulation"), down_face = face("SPH, downstream face", "simulation");
+  Series up_fd = face("finite volume (this pile), upstream", "analytical");
+  Series down_fd = face("finite volume (this pile), downstream", "analytical");
+  Series thin_face = face("thin pile (Harr 1962), downstream", "analytical");
   for (int c = 0; c < bins.nx * bins.ny; ++c) {
     if (!bins.n[c]) continue;
     const double x = bins.x[c] / bins.n[c], y = bins.y[c] / bins.n[c], h = (bins.h[c] / bins.n[c] - h_down) / H;
