@@ -14,6 +14,10 @@ struct BodyFields {
   // outward unit normal of a walls.boundaries surface at its wall particles (zero at container walls,
   // but for Morris and ghost walls: the normal of the nearest container or block face, boundary/wall_surface.hpp)
   static constexpr const char* wall_nx = "wall_nx", *wall_ny = "wall_ny", *wall_nz = "wall_nz";
+  // int bit mask at container and block walls of soil scenes: bit a set where the particle's mirror
+  // across the wall reverses axis a (a container particle beyond its inner box on axis a; a block
+  // particle's nearest face normal to a); two or three bits at an edge or corner (the double mirror)
+  static constexpr const char* wall_mirror_axes = "wall_mirror_axes";
   static constexpr const char* surcharge = "surcharge";            // [Pa] on a soil body's top row
   static constexpr const char* surcharge_ramp = "surcharge_ramp";  // [s]
 };

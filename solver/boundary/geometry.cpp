@@ -213,6 +213,12 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
       P.add(x, y, z, rho0 * vol, rho0, wall, 0);
       if (s.mixed_wall_slip())
         P.add_int_field(BodyFields::wall_free_slip, BodyFields::owner).back() = c.slip == "free_slip" ? 1 : 0;
+      if (s.has_soil()) {
+        std::int32_t axes = 0;
+        for (int a = 0; a < s.dim; ++a)
+          if (q[a] < c.lo[a] || q[a] > c.hi[a]) axes |= 1 << a;
+        P.add_int_field(BodyFields::wall_mirror_axes, BodyFields::owner).back() = axes;
+      }
       // the depth behind the nearest point of the container's inner box, and the direction to it (a
       // corner particle's diagonal)
       if (surface) {
@@ -238,16 +244,18 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
       P.add_int_field(BodyFields::wall_block, BodyFields::owner).back() = static_cast<std::int32_t>(k + 1);
       P.vx.back() = f * b.velocity[0]; P.vy.back() = f * b.velocity[1]; P.vz.back() = f * b.velocity[2];
       // the depth below the block's nearest face and that face's outward normal
+      const double q[3] = {x, y, z};
+      double depth = INFINITY;
+      int axis = 0;
+      double sign = 0;
+      for (int a = 0; a < s.dim; ++a)
+        for (const double side : {-1.0, 1.0}) {
+          const double d = side < 0 ? q[a] - b.lo[a] : b.hi[a] - q[a];
+          if (d < depth) { depth = d; axis = a; sign = side; }
+        }
+      if (s.has_soil()) P.add_int_field(BodyFields::wall_mirror_axes, BodyFields::owner).back() = 1 << axis;
       if (surface) {
-        const double q[3] = {x, y, z};
-        double depth = INFINITY, n[3] = {0, 0, 0};
-        int axis = 0;
-        double sign = 0;
-        for (int a = 0; a < s.dim; ++a)
-          for (const double side : {-1.0, 1.0}) {
-            const double d = side < 0 ? q[a] - b.lo[a] : b.hi[a] - q[a];
-            if (d < depth) { depth = d; axis = a; sign = side; }
-          }
+        double n[3] = {0, 0, 0};
         n[axis] = sign;
         set_surface_geometry(P, depth, n);
       }

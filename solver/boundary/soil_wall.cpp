@@ -133,6 +133,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         const double volume = std::pow(scene_.dx, scene_.dim);
         const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         const std::int32_t* block = P.find_int(BodyFields::wall_block);
+        const std::int32_t* mirror_axes = P.find_int(BodyFields::wall_mirror_axes);
         const double* wn[3] = {P.find(BodyFields::wall_nx), P.find(BodyFields::wall_ny), P.find(BodyFields::wall_nz)};
         // saturated soil: the effective stress grows with the buoyant weight rho - (1 - n) rho_w
         const double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
@@ -157,7 +158,16 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           };
           if (!read_[w]) { far_wall(); continue; }
           const bool no_slip = slip ? slip[w] == 0 : no_slip_;
-          const double shear_sign = no_slip ? 1.0 : -1.0;
+          // free slip at a container or block face: R sigma R^T with R = diag(-1 on the mirror axes), so
+          // shear ab reverses where exactly one of a, b is mirrored (at a face normal to x: xy and xz, not
+          // yz; at a 2D corner none); no slip keeps every shear
+          const auto shear_sign = [&](std::size_t k, int c) {
+            if (no_slip) return 1.0;
+            if (!mirror_axes || mirror_axes[k] == 0) return -1.0;  // no face known: every shear reverses
+            static constexpr int kAxes[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+            const bool ma = (mirror_axes[k] >> kAxes[c][0]) & 1, mb = (mirror_axes[k] >> kAxes[c][1]) & 1;
+            return ma != mb ? -1.0 : 1.0;
+          };
           double sw = 0, ss[6] = {0, 0, 0, 0, 0, 0}, sr[3] = {0, 0, 0}, sv[3] = {0, 0, 0}, sd[3] = {0, 0, 0}, wmax = -1;
           std::uint16_t mat = 0;
           bool covered = false;  // the centre lies inside a structure particle's cell: the structure is there
@@ -211,7 +221,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             if (ncomp == 6) { s[4][w] = m(0, 2); s[5][w] = m(1, 2); }
           } else {
             for (int c = 0; c < 3; ++c) s[c][w] = ss[c] / sw - hydro;
-            for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign * ss[c] / sw;
+            for (int c = 3; c < ncomp; ++c) s[c][w] = shear_sign(w, c) * ss[c] / sw;
           }
           const double vs[3] = {sv[0] / sw, sv[1] / sw, sv[2] / sw};  // Shepard average of the soil velocity
           if (clamp) {
