@@ -46,6 +46,23 @@ double max_soil_speed(const Particles& P) {
   return std::sqrt(v2);
 }
 
+double rms_soil_speed(const Particles& P) {
+  double mv2 = 0, m = 0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil) {
+      mv2 += P.m[i] * (P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
+      m += P.m[i];
+    }
+  return m > 0 ? std::sqrt(mv2 / m) : 0.0;
+}
+
+std::size_t soil_particles_faster_than(const Particles& P, double v) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.kind[i] == Kind::Soil && P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i] > v * v) ++n;
+  return n;
+}
+
 std::vector<SandModel> sand_models(const CaseConfig& cfg) {
   const nlohmann::json& all = cfg.spec.at("sand_models");
   std::vector<std::string> names;

@@ -30,6 +30,13 @@ double scaling_law(const nlohmann::json& entries, double a);
 // Largest speed of any soil particle.
 double max_soil_speed(const Particles& P);
 
+// Root-mean-square speed of the soil, mass-weighted: sqrt(2 E_kin / M), the kinetic energy of the
+// soil as a speed.
+double rms_soil_speed(const Particles& P);
+
+// Soil particles faster than v.
+std::size_t soil_particles_faster_than(const Particles& P, double v);
+
 // One sand model of a collapse case: case.json's "sand_models" maps a name to
 // {"material": <the scene's material object>, "scored": bool, "why": "..."}; an unscored model's
 // records are studies shown beside the scored one (the reason is "why").
