@@ -1,5 +1,7 @@
 #include "harness/deposit.hpp"
 
+#include "sim/gravity_loading.hpp"  // solid_kinetic_energy
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -46,14 +48,11 @@ double max_soil_speed(const Particles& P) {
   return std::sqrt(v2);
 }
 
-double rms_soil_speed(const Particles& P) {
-  double mv2 = 0, m = 0;
+double rms_solid_speed(const Particles& P) {
+  double m = 0;
   for (std::size_t i = 0; i < P.size(); ++i)
-    if (P.kind[i] == Kind::Soil) {
-      mv2 += P.m[i] * (P.vx[i] * P.vx[i] + P.vy[i] * P.vy[i] + P.vz[i] * P.vz[i]);
-      m += P.m[i];
-    }
-  return m > 0 ? std::sqrt(mv2 / m) : 0.0;
+    if (P.kind[i] == Kind::Soil || P.kind[i] == Kind::Structure) m += P.m[i];
+  return m > 0 ? std::sqrt(2.0 * solid_kinetic_energy(P) / m) : 0.0;
 }
 
 std::size_t soil_particles_faster_than(const Particles& P, double v) {

@@ -30,9 +30,9 @@ double scaling_law(const nlohmann::json& entries, double a);
 // Largest speed of any soil particle.
 double max_soil_speed(const Particles& P);
 
-// Root-mean-square speed of the soil, mass-weighted: sqrt(2 E_kin / M), the kinetic energy of the
-// soil as a speed.
-double rms_soil_speed(const Particles& P);
+// Root-mean-square speed of the solids (soil and structures), mass-weighted: sqrt(2 E_kin / M), their
+// kinetic energy (solid_kinetic_energy, sim/gravity_loading.hpp) as a speed.
+double rms_solid_speed(const Particles& P);
 
 // Soil particles faster than v.
 std::size_t soil_particles_faster_than(const Particles& P, double v);
