@@ -24,7 +24,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
   if (ghost_)
     update_ghost_walls(scene_, fluid_.eos(), P, cells, g, no_slip_ ? P.field(DummyWallFields::vx).data() : nullptr,
                        no_slip_ ? P.field(DummyWallFields::vy).data() : nullptr,
-                       no_slip_ ? P.field(DummyWallFields::vz).data() : nullptr, unmirrored_);
+                       no_slip_ ? P.field(DummyWallFields::vz).data() : nullptr, unmirrored_, mirrors_);
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();

@@ -38,6 +38,7 @@ class DummyWalls {
   const FluidForces& fluid_;
   bool no_slip_, ghost_;
   mutable std::vector<std::uint8_t> unmirrored_;  // ghost walls: the particles left to the dummy treatment
+  mutable PointList mirrors_;  // ghost walls: the fluid near each mirror point
 };
 
 }  // namespace geosph

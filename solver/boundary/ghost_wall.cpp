@@ -6,13 +6,14 @@
 
 #include "boundary/body_fields.hpp"
 #include "boundary/wall_surface.hpp"
+#include "coupling/seepage_fields.hpp"
 #include "core/kernels.hpp"
 
 namespace geosph {
 
 void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
                         const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz,
-                        std::vector<std::uint8_t>& unmirrored) {
+                        std::vector<std::uint8_t>& unmirrored, PointList& mirrors) {
   unmirrored.assign(P.size(), 0);
   const int dim = scene.dim;
   const double h = scene.h(), inv_h = 1.0 / h;
@@ -22,6 +23,9 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
   const double* ny = P.find(BodyFields::wall_ny);
   const double* nz = P.find(BodyFields::wall_nz);
   const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
+  const double* normal[3] = {nx, ny, nz};
+  double* por = scene.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;  // pore water, its walls
+  update_mirror_list(P, cells, Kind::Fluid, depth, normal, [&](std::size_t w) { return P.kind[w] == Kind::DummyWall; }, mirrors);
   std::visit(
       [&](const auto& kernel) {
         const std::size_t n = P.size();
@@ -36,7 +40,7 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
             nb.clear();
             double wmax = -1;
             std::uint16_t mat = 0;
-            cells.for_each_near_point(P, xm[0], xm[1], xm[2], [&](std::uint32_t f, double dx, double dy, double dz, double r2) {
+            cells.for_each_near_point(P, mirrors, w, xm[0], xm[1], xm[2], [&](std::uint32_t f, double dx, double dy, double dz, double r2) {
               if (P.kind[f] != Kind::Fluid) return;
               const double W = kernel.W(std::sqrt(r2));
               // d = x_m - x_f, so b = (x_f - x_m) / h = -d / h
@@ -50,13 +54,18 @@ void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Par
               continue;
             }
             const TaitEos& e = eos[mat];
-            double fit[5];  // p, rho, v at the mirror point
-            bounded_mls<5>(nb, dim, sv, [&](std::uint32_t f, double v[5]) {
-              v[0] = P.p[f]; v[1] = P.rho[f]; v[2] = P.vx[f]; v[3] = P.vy[f]; v[4] = P.vz[f];
+            double fit[6];  // p, the intrinsic density rho / n, v and the porosity n at the mirror point
+            bounded_mls<6>(nb, dim, sv, [&](std::uint32_t f, double v[6]) {
+              const double nf = por ? por[f] : 1.0;
+              v[0] = P.p[f]; v[1] = P.rho[f] / nf; v[2] = P.vx[f]; v[3] = P.vy[f]; v[4] = P.vz[f]; v[5] = nf;
             }, fit);
             const double pm = fit[0], rm = fit[1], vm[3] = {fit[2], fit[3], fit[4]};
             P.p[w] = pm + rm * (g[0] * (xw[0] - xm[0]) + g[1] * (xw[1] - xm[1]) + g[2] * (xw[2] - xm[2]));
             P.rho[w] = e.density(P.p[w]);
+            if (por) {  // pore water: the partial density n rho_w, as the dummy walls take it
+              por[w] = fit[5];
+              P.rho[w] *= por[w];
+            }
             P.m[w] = P.rho[w] * volume;
             if (wvx && !(slip && slip[w])) {
               wvx[w] = 2.0 * P.vx[w] - vm[0];

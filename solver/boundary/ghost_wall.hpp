@@ -14,8 +14,10 @@
 // has no fluid within the support (the wall above the fluid; the far side of a wall thinner than
 // two supports, where the nearest surface is not the one facing the fluid) takes the dummy value. Dummy walls (Adami et al. 2012) average
 // the fluid around the wall particle itself, a one-sided average whose wall velocity is first order;
-// the mirror reproduces a linear velocity profile through the wall. Fluid-only, single-phase scenes
-// (the scene rejects ghost walls with soil).
+// the mirror reproduces a linear velocity profile through the wall. Pore water (two-phase scenes): the
+// fit is of p, the intrinsic density rho / n, v and the porosity n, the hydrostatic step takes the
+// intrinsic density and the wall the partial density n rho(p_w) and porosity n(x_m), as the dummy
+// walls do with the averages around the particle. The soil's ghost values are boundary/soil_wall.hpp's.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -33,9 +35,10 @@ namespace geosph {
 // support and, for no slip (wvx non-null), its ghost velocity into wvx, wvy, wvz; sets unmirrored[w] = 1
 // for the others (size P.size()), which take the dummy walls' values at the particle itself
 // (DummyWalls::update): the far side of a wall thinner than two supports, whose nearest surface is not
-// the one facing the fluid, and the wall above the fluid.
+// the one facing the fluid, and the wall above the fluid. `mirrors` keeps the fluid near each mirror
+// point between pair list builds (update_mirror_list, boundary/mirror_mls.hpp).
 void update_ghost_walls(const Scene& scene, const std::vector<TaitEos>& eos, Particles& P, const CellList& cells,
                         const std::array<double, 3>& g, double* wvx, double* wvy, double* wvz,
-                        std::vector<std::uint8_t>& unmirrored);
+                        std::vector<std::uint8_t>& unmirrored, PointList& mirrors);
 
 }  // namespace geosph

@@ -11,11 +11,37 @@
 
 #include <Eigen/Core>
 
+#include "core/cell_list.hpp"
+#include "core/particles.hpp"
+
 namespace geosph {
 
 // The mirror point of a wall particle at x with depth d behind the surface and unit normal n.
 inline std::array<double, 3> ghost_mirror_point(const double x[3], double depth, const double n[3]) {
   return {x[0] + 2 * depth * n[0], x[1] + 2 * depth * n[1], x[2] + 2 * depth * n[2]};
+}
+
+// Keeps `list` of the particles of `kind` near the mirror point of each wall particle w with listed(w)
+// (n: the wall normal fields, null where a scene has none), built once per pair list build, so that a
+// mirror point's query reads its listed candidates instead of scanning 5^dim cells
+// (CellList::for_each_near_point with the list). Without a pair list nothing is listed and the queries
+// scan. A mirror point moves with its wall particle (x_w + 2 d n, d and n fixed), so the list stays
+// valid as long as the pair list does. Query only the walls listed(w) selects.
+template <class Listed>
+void update_mirror_list(const Particles& P, const CellList& cells, Kind kind, const double* depth, const double* const n[3],
+                        const Listed& listed, PointList& list) {
+  if (!cells.pairs_cached() || cells.point_list_current(list)) return;
+  cells.list_near_points(
+      P, P.size(),
+      [&](std::size_t w, double xq[3]) {
+        if (!listed(w)) return false;
+        const double xw[3] = {P.x[w], P.y[w], P.z[w]};
+        const double nw[3] = {n[0] ? n[0][w] : 0.0, n[1] ? n[1][w] : 0.0, n[2] ? n[2][w] : 0.0};
+        const auto xm = ghost_mirror_point(xw, depth[w], nw);
+        for (int a = 0; a < 3; ++a) xq[a] = xm[a];
+        return true;
+      },
+      [&](std::uint32_t j) { return P.kind[j] == kind; }, list);
 }
 
 // A neighbour f of the mirror point x_m: its index, W_mf V_f and the basis b_f = (x_f - x_m) / h.

@@ -38,12 +38,12 @@ template <class Kernel, class EffectiveDensity>
 bool mirror_ghost(const Particles& P, const CellList& cells, const Kernel& kernel, std::size_t w, double depth,
                   const double n[3], bool corner, bool no_slip, bool clamp, const std::array<double, 3>& g, int ncomp,
                   double* const* s, double* const* wv, const EffectiveDensity& rho_eff, double inv_h,
-                  std::vector<MirrorNeighbour>& nb) {
+                  const PointList& mirrors, std::vector<MirrorNeighbour>& nb) {
   const double xw[3] = {P.x[w], P.y[w], P.z[w]};
   const auto xm = ghost_mirror_point(xw, depth, n);
   nb.clear();
   double sv = 0;
-  cells.for_each_near_point(P, xm[0], xm[1], xm[2], [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
+  cells.for_each_near_point(P, mirrors, w, xm[0], xm[1], xm[2], [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
     if (P.kind[k] != Kind::Soil) return;
     const double W = kernel.W(std::sqrt(r2));
     nb.push_back({k, W * P.m[k] / P.rho[k], {-dx * inv_h, -dy * inv_h, -dz * inv_h}});  // b = (x_k - x_m) / h
@@ -141,6 +141,9 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
         mark_read_walls(P, cells);
         const double rho0_far = scene_.soils.front().density;
         const double* depth = ghost_ ? P.find(WallSurfaceFields::depth) : nullptr;
+        if (depth)  // the walls mirror_ghost queries: the read ones
+          update_mirror_list(P, cells, Kind::Soil, depth, wn, [&](std::size_t w) { return P.kind[w] == Kind::DummyWall && read_[w]; },
+                             mirrors_);
         const std::int32_t* corner = P.find_int(WallSurfaceFields::corner);
         const double inv_h = 1.0 / scene_.h();
         const auto effective_density = [&](std::size_t k) { return por ? P.rho[k] - (1.0 - por[k]) * rho_w : P.rho[k]; };
@@ -203,7 +206,7 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           const double nw[3] = {shaped ? wn[0][w] : 0.0, shaped ? wn[1][w] : 0.0, shaped ? wn[2][w] : 0.0};
           const bool at_corner = corner && corner[w];
           if (depth && mirror_ghost(P, cells, kernel, w, depth[w], nw, at_corner, no_slip, clamp, g, ncomp, s, wv,
-                                    effective_density, inv_h, nb))
+                                    effective_density, inv_h, mirrors_, nb))
             continue;  // the ghost values at the mirror point; else the dummy values below
           const double hydro = (g[0] * sr[0] + g[1] * sr[1] + g[2] * sr[2]) / sw;  // fixed walls: a_w = 0
           if (shaped && !no_slip && !at_corner) {

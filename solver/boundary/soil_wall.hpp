@@ -62,6 +62,7 @@ class SoilWalls {
   const Scene& scene_;
   bool no_slip_, ghost_;  // ghost_: walls.type "ghost", the values at each wall particle's mirror point
   mutable std::vector<std::uint8_t> read_;
+  mutable PointList mirrors_;  // ghost walls: the soil near each read wall's mirror point
   mutable long marked_build_ = -1;  // the pair list build read_ was marked from, -1 for none
 };
 

@@ -31,7 +31,7 @@ const bool documented = register_section(
                  "dummy particles with extrapolated pressure/stress (Adami et al. 2012), repulsive particles "
                  "(Monaghan 1994, fluids only), or Morris no-slip walls (Morris, Fox & Zhu 1997, fluids only: dummy "
                  "pressure, the wall velocity extrapolated per pair across the wall's tangent plane; no free slip), or "
-                 "ghost walls (fixed ghost particles, Marrone et al. 2011, fluid and dry soil, not two-phase: each wall particle "
+                 "ghost walls (fixed ghost particles, Marrone et al. 2011, fluid, soil and two-phase soil: each wall particle "
                  "takes the fluid's pressure and opposite velocity, or the soil's stress and velocity mirrored across "
                  "the wall (free slip) or copied with the opposite velocity (no slip), at its mirror point, by linear "
                  "moving least squares)"),

@@ -53,6 +53,17 @@ struct GatherPointers {
   }
 };
 
+// A Verlet list for query points that are not particles (ghost walls' mirror points), built by
+// CellList::list_near_points: point q's candidates are j[start[q] .. start[q+1]), in the order the
+// cell scan visits them, with their periodic images. Valid for the pair list build it was made in
+// (`build`), provided each point moves with a particle (a mirror point with its wall particle).
+struct PointList {
+  std::vector<std::size_t> start;
+  std::vector<std::uint32_t> j;
+  std::vector<std::uint8_t> image;  // periodic scenes only
+  long build = -1;
+};
+
 // Buffers for neighbour queries nested inside another's pair function (a few levels).
 class NeighborStack {
  public:
@@ -159,6 +170,68 @@ class CellList {
         if (r2 < r2max_) f(j, dx, dy, dz, r2);
       }
     });
+  }
+
+  // Lists, for each of nq query points, the particles j with keep(j) within radius + skin of it at the
+  // pair list's current build: point(q, xyz) writes point q's position and returns false where q has
+  // no query. Two passes (count, fill), each a parallel loop: the list does not depend on the thread
+  // count. Requires pairs_cached().
+  template <class Point, class Keep>
+  void list_near_points(const Particles& P, std::size_t nq, const Point& point, const Keep& keep, PointList& out) const {
+    if (!cached_) throw std::logic_error("CellList::list_near_points needs the pair list");
+    out.start.assign(nq + 1, 0);
+    const auto scan = [&](std::size_t q, auto&& take) {
+      double xq[3] = {0, 0, 0};
+      if (!point(q, xq)) return;
+      const bool flat = dim_ == 2;
+      for_each_range_at(xq[0], xq[1], xq[2], [&](std::uint32_t s0, std::uint32_t s1, double sx, double sy, double sz) {
+        for (std::uint32_t s = s0; s < s1; ++s) {
+          const std::uint32_t j = identity_ ? s : sorted_[s];
+          const double dx = xq[0] - (P.x[j] + sx), dy = xq[1] - (P.y[j] + sy), dz = flat ? 0.0 : xq[2] - (P.z[j] + sz);
+          if (dx * dx + dy * dy + dz * dz < list_r2max_ && keep(j)) take(j, image_code(sx, sy, sz));
+        }
+      });
+    };
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t q = 0; q < nq; ++q) {
+      std::size_t c = 0;
+      scan(q, [&](std::uint32_t, std::uint8_t) { ++c; });
+      out.start[q + 1] = c;
+    }
+    for (std::size_t q = 0; q < nq; ++q) out.start[q + 1] += out.start[q];
+    out.j.resize(out.start[nq]);
+    out.image.resize(any_periodic_ ? out.start[nq] : 0);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t q = 0; q < nq; ++q) {
+      std::size_t c = out.start[q];
+      scan(q, [&](std::uint32_t j, std::uint8_t im) {
+        out.j[c] = j;
+        if (any_periodic_) out.image[c] = im;
+        ++c;
+      });
+    }
+    out.build = list_builds_;
+  }
+  // Whether `list` was built for the pair list as it stands.
+  bool point_list_current(const PointList& list) const { return cached_ && list.build == list_builds_; }
+
+  // for_each_near_point at query point q of `list` (at x, y, z now), from its listed candidates where
+  // the list is current: the same particles in the same order as the scan (each moved under half the
+  // skin since the build), filtered by the list's keep.
+  template <class F>
+  void for_each_near_point(const Particles& P, const PointList& list, std::size_t q, double x, double y, double z, F&& f) const {
+    if (!point_list_current(list)) {
+      for_each_near_point(P, x, y, z, f);
+      return;
+    }
+    const bool flat = dim_ == 2;
+    for (std::size_t k = list.start[q]; k < list.start[q + 1]; ++k) {
+      const std::uint32_t j = list.j[k];
+      const double* s = any_periodic_ ? image_shift_[list.image[k]].data() : image_shift_[13].data();
+      const double dx = x - (P.x[j] + s[0]), dy = y - (P.y[j] + s[1]), dz = flat ? 0.0 : z - (P.z[j] + s[2]);
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < r2max_) f(j, dx, dy, dz, r2);
+    }
   }
 
  private:

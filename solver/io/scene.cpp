@@ -500,9 +500,6 @@ void validate_scene(const Scene& s) {
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy" && s.walls.type != "ghost")
     fail("walls.type", "soil needs dummy or ghost walls (they carry the soil's stress); \"" + s.walls.type +
                            "\" walls are for fluids only");
-  if (s.two_phase() && s.has_walls() && s.walls.type == "ghost")  // the mirror has no porosity yet
-    fail("walls.type", "\"ghost\" walls are for single-phase fluid and dry soil; a two-phase scene needs "
-                       "\"dummy\" walls (they carry the pore water's porosity)");
   if (s.walls.type == "morris") {  // Morris et al.'s (1997) treatment is a no-slip condition
     const char* why = "is \"free_slip\", but Morris walls (walls.type \"morris\") are no-slip walls; use walls.type "
                       "\"dummy\" for free slip";

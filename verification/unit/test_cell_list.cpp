@@ -287,3 +287,93 @@ TEST(CellList, NoSkinKeepsNoPairList) {
   EXPECT_FALSE(cl.pairs_cached());
   EXPECT_FALSE(cl.pairs_current(P));
 }
+
+namespace {
+
+// The point list (ghost walls' mirror points): each query point rides on a particle at a fixed offset;
+// after moves under half the skin, the listed query gives the scan's neighbours of the kept kind in the
+// scan's order with the same bits, and a stale list (after a rebuild of the pairs) falls back to the scan.
+void check_point_list(const Box& box, double radius, int n, unsigned seed) {
+  const double skin = 0.2 * radius;
+  Particles P = random_particles(box, n, seed);
+  for (std::size_t i = 0; i < P.size(); i += 3) P.kind[i] = Kind::DummyWall;  // the carriers, and not kept
+  const double off[3] = {0.3 * radius, -0.2 * radius, box.dim == 3 ? 0.1 * radius : 0.0};
+  const auto point_of = [&](std::size_t q, double xq[3]) {
+    if (P.kind[q] != Kind::DummyWall) return false;
+    const double p[3] = {P.x[q] + off[0], P.y[q] + off[1], P.z[q] + off[2]};
+    for (int a = 0; a < 3; ++a) xq[a] = p[a];
+    return true;  // a point outside the box is queried too (the cell scan clamps to the edge cells)
+  };
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, radius, skin), -1);
+  cl.rebuild_pairs(P);
+  PointList pl;
+  EXPECT_FALSE(cl.point_list_current(pl));
+  cl.list_near_points(P, P.size(), point_of, [&](std::uint32_t j) { return P.kind[j] == Kind::Fluid; }, pl);
+  EXPECT_TRUE(cl.point_list_current(pl));
+  std::size_t found = 0;
+  for (int round = 0; round < 3; ++round) {
+    if (round > 0) {
+      jiggle(P, box, 0.16 * skin, seed + 30 + round);  // as a step does: cells kept while the pairs are current
+      ASSERT_EQ(cl.find_outside(P, box), -1);
+      ASSERT_TRUE(cl.pairs_current(P));
+    }
+    for (std::size_t q = 0; q < P.size(); ++q) {
+      double xq[3];
+      if (!point_of(q, xq)) continue;
+      std::vector<Pair> scan, listed;
+      cl.for_each_near_point(P, xq[0], xq[1], xq[2], [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+        if (P.kind[j] == Kind::Fluid) scan.push_back({j, dx, dy, dz, r2});
+      });
+      cl.for_each_near_point(P, pl, q, xq[0], xq[1], xq[2], [&](std::uint32_t j, double dx, double dy, double dz, double r2) {
+        listed.push_back({j, dx, dy, dz, r2});
+      });
+      ASSERT_EQ(scan.size(), listed.size()) << "point " << q << ", round " << round;
+      for (std::size_t k = 0; k < scan.size(); ++k) {
+        ASSERT_EQ(scan[k].j, listed[k].j) << "point " << q;
+        EXPECT_EQ(scan[k].dx, listed[k].dx);
+        EXPECT_EQ(scan[k].dy, listed[k].dy);
+        EXPECT_EQ(scan[k].dz, listed[k].dz);
+        EXPECT_EQ(scan[k].r2, listed[k].r2);
+      }
+      found += listed.size();
+    }
+  }
+  EXPECT_GT(found, P.size());
+  cl.rebuild_pairs(P);  // a new build: the list is stale and the query scans
+  EXPECT_FALSE(cl.point_list_current(pl));
+  std::size_t all = 0;
+  cl.for_each_near_point(P, pl, 0, P.x[0] + off[0], P.y[0] + off[1], P.z[0] + off[2],
+                         [&](std::uint32_t, double, double, double, double) { ++all; });
+  std::size_t expect = 0;
+  cl.for_each_near_point(P, P.x[0] + off[0], P.y[0] + off[1], P.z[0] + off[2],
+                         [&](std::uint32_t, double, double, double, double) { ++expect; });
+  EXPECT_EQ(all, expect);
+}
+
+}  // namespace
+
+TEST(CellList, PointListGivesTheScansNeighboursInItsOrder) {
+  Box box2; box2.dim = 2; box2.lo = {-0.3, 0.1, 0}; box2.hi = {0.7, 0.65, 0};
+  check_point_list(box2, 0.06, 1500, 31);
+  Box box3; box3.dim = 3; box3.lo = {0, 0, 0}; box3.hi = {0.5, 0.4, 0.3};
+  check_point_list(box3, 0.07, 1200, 32);
+}
+
+TEST(CellList, PointListAcrossPeriodicBoundaries) {
+  Box box2; box2.dim = 2; box2.lo = {0, 0, 0}; box2.hi = {0.3, 0.5, 0}; box2.periodic = {true, false, false};
+  check_point_list(box2, 0.08, 800, 33);
+  Box box3; box3.dim = 3; box3.lo = {0, 0, 0}; box3.hi = {0.3, 0.3, 0.3}; box3.periodic = {true, true, true};
+  check_point_list(box3, 0.09, 800, 34);
+}
+
+TEST(CellList, PointListNeedsThePairList) {
+  Box box; box.dim = 2; box.hi = {1, 1, 1};
+  Particles P = random_particles(box, 100, 35);
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, 0.1), -1);
+  PointList pl;
+  EXPECT_THROW(cl.list_near_points(P, P.size(), [](std::size_t, double*) { return false; },
+                                   [](std::uint32_t) { return true; }, pl),
+               std::logic_error);
+}

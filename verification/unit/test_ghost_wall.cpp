@@ -14,6 +14,7 @@
 #include "boundary/soil_wall.hpp"
 #include "boundary/wall_surface.hpp"
 #include "core/cell_list.hpp"
+#include "coupling/seepage_fields.hpp"
 #include "soil/soil_fields.hpp"
 #include "test_scenes.hpp"
 
@@ -32,6 +33,18 @@ json ghost_tank() {
     "bodies": [{"material": "water", "shape": "box", "min": [0, 0], "max": [1, 1]}],
     "walls": {"type": "ghost", "containers": [{"min": [0, 0], "max": [1, 1.25], "open": ["top"]}]}
   })");
+}
+
+// The soil column saturated (pore water in the soil's box, the sand's porosity and conductivity), with
+// walls of the given type.
+json saturated_column(const char* walls) {
+  auto j = geosph::test::soil_column_scene();
+  j["walls"]["type"] = walls;
+  j["materials"]["water"] = json::parse(R"({"model": "tait_fluid", "density": 1000, "sound_speed": 20})");
+  j["materials"]["sand"]["porosity"] = 0.4;
+  j["materials"]["sand"]["hydraulic_conductivity"] = 1e-3;
+  j["bodies"].push_back(json::parse(R"({"material": "water", "shape": "box", "min": [0, 0], "max": [0.2, 0.1]})"));
+  return j;
 }
 
 }  // namespace
@@ -67,7 +80,8 @@ TEST(GhostWall, LinearFieldsMirrorExactly) {
   for (const auto& m : s.materials) eos.emplace_back(m);
   std::vector<double> wvx(P.size()), wvy(P.size()), wvz(P.size());
   std::vector<std::uint8_t> unmirrored;
-  update_ghost_walls(s, eos, P, cells, {0, -g, 0}, wvx.data(), wvy.data(), wvz.data(), unmirrored);
+  PointList mirrors;  // no pair list here: the mirror queries scan the cells
+  update_ghost_walls(s, eos, P, cells, {0, -g, 0}, wvx.data(), wvy.data(), wvz.data(), unmirrored, mirrors);
   const double* depth = P.find(WallSurfaceFields::depth);
   ASSERT_NE(depth, nullptr);
   int floor = 0, corner = 0;
@@ -199,17 +213,55 @@ TEST(GhostWall, MirrorReflections) {
   EXPECT_NEAR((R * Eigen::Vector3d(-c, c, 0) - Eigen::Vector3d(-c, c, 0)).norm(), 0.0, 1e-15);
 }
 
-// Ghost walls carry no porosity: a two-phase scene with them is rejected naming walls.type; Morris and
-// repulsive walls stay fluid-only.
-TEST(GhostWall, TwoPhaseSceneRejected) {
-  // the soil column made saturated: pore water in the soil's box, and the sand's porosity and conductivity
-  auto j = geosph::test::soil_column_scene();
-  j["walls"]["type"] = "ghost";
-  j["materials"]["water"] = json::parse(R"({"model": "tait_fluid", "density": 1000, "sound_speed": 20})");
-  j["materials"]["sand"]["porosity"] = 0.4;
-  j["materials"]["sand"]["hydraulic_conductivity"] = 1e-3;
-  j["bodies"].push_back(json::parse(R"({"material": "water", "shape": "box", "min": [0, 0], "max": [0.2, 0.1]})"));
-  test::expect_scene_error(j, "walls.type", "two-phase scene needs \"dummy\" walls");
-  j["walls"]["type"] = "dummy";
-  EXPECT_NO_THROW(parse_scene(j, "ok.json"));
+// Pore water at ghost walls (two-phase scenes): with a linear pressure, a constant intrinsic density
+// and a linear porosity in the water, a floor wall particle carries the hydrostatic pressure at its own
+// depth, the porosity at its mirror point, and the partial density n rho(p_w), to round-off.
+TEST(GhostWall, PoreWaterMirrorsItsPorosity) {
+  const Scene s = parse_scene(saturated_column("ghost"), "ok.json");
+  ASSERT_TRUE(s.two_phase());
+  Particles P = build_particles(s);
+  std::vector<double>& por = P.find(SeepageFields::porosity) ? P.field(SeepageFields::porosity)
+                                                             : P.add_field(SeepageFields::porosity, "seepage");
+  const double rho0 = 1000, g = 9.81, H = 0.1, p_top = 20.0;
+  const auto n_at = [](double y) { return 0.4 + 0.5 * y; };
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Fluid) continue;
+    por[i] = n_at(P.y[i]);
+    P.rho[i] = rho0 * por[i];  // the partial density n rho_w
+    P.m[i] = P.rho[i] * s.dx * s.dx;
+    P.p[i] = p_top + rho0 * g * (H - P.y[i]);
+    P.vx[i] = P.vy[i] = 0;
+  }
+  CellList cells;
+  ASSERT_EQ(cells.build(P, s.domain, s.support()), -1);
+  std::vector<TaitEos> eos;
+  for (const auto& m : s.materials) eos.emplace_back(m);
+  std::vector<std::uint8_t> unmirrored;
+  PointList mirrors;
+  update_ghost_walls(s, eos, P, cells, {0, -g, 0}, nullptr, nullptr, nullptr, unmirrored, mirrors);
+  const double* depth = P.find(WallSurfaceFields::depth);
+  ASSERT_NE(depth, nullptr);
+  int checked = 0;
+  for (std::size_t w = 0; w < P.size(); ++w) {
+    if (P.kind[w] != Kind::DummyWall || P.y[w] > 0 || P.x[w] < 0.05 || P.x[w] > 0.15) continue;
+    const double ym = -P.y[w];  // the mirror point across the floor y = 0
+    const std::string at = "x = " + std::to_string(P.x[w]) + ", y = " + std::to_string(P.y[w]);
+    EXPECT_EQ(unmirrored[w], 0) << at;
+    EXPECT_NEAR(P.p[w], p_top + rho0 * g * (H - P.y[w]), 1e-9 * rho0 * g * H) << at;
+    EXPECT_NEAR(por[w], n_at(ym), 1e-12) << at;
+    const double rho_w = eos[0].density(P.p[w]) * n_at(ym);
+    EXPECT_NEAR(P.rho[w], rho_w, 1e-9 * rho0) << at;
+    EXPECT_NEAR(P.m[w], rho_w * s.dx * s.dx, 1e-9 * rho0 * s.dx * s.dx) << at;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+}
+
+// Morris and repulsive walls stay fluid-only: a soil scene with them is rejected naming walls.type.
+TEST(GhostWall, SoilSceneRejectsFluidOnlyWalls) {
+  for (const char* type : {"morris", "repulsive"}) {
+    auto j = saturated_column(type);
+    test::expect_scene_error(j, "walls.type", "soil needs dummy or ghost walls");
+  }
+  EXPECT_NO_THROW(parse_scene(saturated_column("dummy"), "ok.json"));
 }
