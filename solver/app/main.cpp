@@ -102,8 +102,9 @@ int cmd_run(const RunOptions& o) {
   } else {
     const GravityLoadingResult& gl = sim.settle_under_gravity();  // before anything is written
     if (gl.ran)
-      std::fprintf(stderr, "gravity loading: settled in %.4g s (%ld steps), kinetic energy %.3g of its peak\n", gl.time,
-                   gl.steps, gl.peak_kinetic_energy > 0 ? gl.final_kinetic_energy / gl.peak_kinetic_energy : 0.0);
+      std::fprintf(stderr, "gravity loading: settled in %.4g s (%ld steps), kinetic energy %.3g of its peak, unbalanced force %.3g of the weight\n",
+                   gl.time, gl.steps, gl.peak_kinetic_energy > 0 ? gl.final_kinetic_energy / gl.peak_kinetic_energy : 0.0,
+                   gl.final_force_ratio);
     prepare_output_dir(o.out, o.overwrite);
   }
   Hdf5Output out(o.out, prov);

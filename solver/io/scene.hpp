@@ -109,6 +109,7 @@ struct GravityLoadingSpec {
   std::string model = "elastic";        // elastic | material
   double damping = 0.8;                 // alpha in [0, 1): Cundall's local damping coefficient
   double kinetic_energy_ratio = 1e-4;   // the stage ends when KE <= ratio x its peak KE
+  double force_ratio = 1e-3;            // and the mean unbalanced force <= ratio x the mean weight
   double ramp = 0;                      // s: gravity grows smoothly over this time within the stage
   double max_time = 20;                 // s: not settled by then is an error naming the field
   // After every construction event (an excavation, a placed body) the solids settle again under the

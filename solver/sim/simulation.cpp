@@ -176,7 +176,11 @@ std::vector<Stage> Simulation::stage_table() {
   add(surcharge, {"surcharge", Hook::Forces, {"surcharge", "surcharge_ramp", "t"}, {}, {"a[solid]"},
                   [this] { if (!loading_now_) apply_surcharge(); }});  // the loading stage is gravity only
   add(scene_.gravity_loading.active, {"gravity_loading_damping", Hook::Forces, {"a[solid]", "v[solid]"}, {}, {"a[solid]"},
-                                      [this] { if (loading_now_) apply_local_damping(P_, scene_.gravity_loading.damping); }});
+                                      [this] {
+                                        if (!loading_now_) return;
+                                        unbalanced_ = unbalanced_force_ratio(P_, scene_.gravity);
+                                        apply_local_damping(P_, scene_.gravity_loading.damping);
+                                      }});
   add(seepage_ != nullptr, {"seepage_coupling", Hook::Forces, {"p", "porosity", "kernel sums"},
                             {"drag_rate", "drag_partner_*"}, {"a[solid]", "a[fluid]"},
                             [this] { seepage_->apply(P_, cells_); }});
@@ -360,7 +364,7 @@ void Simulation::stop_solids() {
 
 bool Simulation::settle(double max_time, long& steps, double& peak, double& ke,
                         const std::function<bool(const Simulation&)>& abandon) {
-  const double ratio = scene_.gravity_loading.kinetic_energy_ratio;
+  const GravityLoadingSpec& g = scene_.gravity_loading;
   steps = 0;
   peak = ke = 0;
   while (true) {
@@ -368,7 +372,8 @@ bool Simulation::settle(double max_time, long& steps, double& peak, double& ke,
     ++steps;
     ke = solid_kinetic_energy(P_);
     peak = std::max(peak, ke);
-    if (t_ >= loading_ramp_ && steps >= 20 && ke <= ratio * peak) return true;
+    if (t_ >= loading_ramp_ && steps >= 20 && ke <= g.kinetic_energy_ratio * peak && unbalanced_ <= g.force_ratio)
+      return true;
     if (t_ > max_time || (abandon && abandon(*this))) return false;
   }
 }
@@ -416,7 +421,7 @@ const GravityLoadingResult& Simulation::try_settle_under_gravity(const std::func
   double peak = 0, ke = 0;
   long steps = 0;
   const bool settled = settle(scene_.gravity_loading.max_time, steps, peak, ke, abandon);
-  loading_ = {true, settled, steps, t_, peak, ke};
+  loading_ = {true, settled, steps, t_, peak, ke, unbalanced_};
   loading_now_ = false;
   if (soil_) soil_->set_elastic_only(false);
   return loading_;
@@ -432,10 +437,11 @@ const GravityLoadingResult& Simulation::settle_under_gravity() {
     throw InputError(scene_.file + ": field 'gravity_loading.max_time': the solids have not settled in " +
                      std::to_string(g.max_time) + " s (" + std::to_string(steps) + " steps): kinetic energy " +
                      std::to_string(ke) + " J" + (scene_.dim == 2 ? "/m" : "") + " is " +
-                     std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak, above kinetic_energy_ratio " +
-                     std::to_string(g.kinetic_energy_ratio) + "; raise max_time or damping, or the slope is failing");
+                     std::to_string(peak > 0 ? ke / peak : 0.0) + " of its peak (kinetic_energy_ratio " +
+                     std::to_string(g.kinetic_energy_ratio) + ") and the unbalanced force " + std::to_string(unbalanced_) +
+                     " of the weight (force_ratio " + std::to_string(g.force_ratio) + "); raise max_time or damping, or the slope is failing");
   }
-  loading_ = {true, true, steps, t_, peak, ke};
+  loading_ = {true, true, steps, t_, peak, ke, unbalanced_};
   loading_now_ = false;
   if (soil_) soil_->set_elastic_only(false);
   stop_solids();

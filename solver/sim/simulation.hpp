@@ -101,8 +101,8 @@ class Simulation {
   void apply_construction();
   // The next construction event's time after t (1e300 if none): the step is shortened to meet it.
   double next_construction_time() const;
-  // Damped steps until the solids' kinetic energy falls to the stage's ratio of its peak, or to
-  // `max_time`; returns whether they settled.
+  // Damped steps until the solids' kinetic energy falls to the stage's ratio of its peak and their
+  // unbalanced force to the stage's ratio of their weight, or to `max_time`; returns whether they settled.
   bool settle(double max_time, long& steps, double& peak, double& ke,
               const std::function<bool(const Simulation&)>& abandon = {});
   bool begin_loading();  // false: the scene has no stage, or it ran
@@ -132,6 +132,7 @@ class Simulation {
   bool stop_ = false;
   bool loading_now_ = false;  // inside the gravity-loading stage (or a settling after construction)
   double loading_ramp_ = 0;   // gravity's ramp within the stage (the first only)
+  double unbalanced_ = 0;     // the solids' unbalanced-force ratio at the last damped step (gravity_loading.hpp)
   GravityLoadingResult loading_;
   struct Placement {          // a body placed during the run, built at start
     std::size_t body;
