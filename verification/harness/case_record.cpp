@@ -18,4 +18,8 @@ void add_case_metric(Record& rec, const CaseConfig& cfg, const std::string& name
   rec.add_metric(name, ok ? value : std::numeric_limits<double>::quiet_NaN(), tol.value, tol.why);
 }
 
+Series linear_depth_profile(const Series& profile, const std::string& name, double at_base, double depth) {
+  return {name, "analytical", profile.plot, profile.xlabel, profile.ylabel, {0.0, at_base}, {0.0, -depth}};
+}
+
 }  // namespace geosph::verify

@@ -76,10 +76,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.series.push_back(s_v);
   rec.series.push_back(s_h);
   const double sv_base = soil.density * g * H0;
-  rec.series.push_back({"rho g z (equilibrium)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,
-                        {0.0, sv_base / 1e3}, {0.0, -H0}});
-  rec.series.push_back({"K0_nc rho g z (Modified Cam Clay)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,
-                        {0.0, k0_ref * sv_base / 1e3}, {0.0, -H0}});
+  rec.series.push_back(linear_depth_profile(s_v, "rho g z (equilibrium)", sv_base / 1e3, H0));
+  rec.series.push_back(linear_depth_profile(s_v, "K0_nc rho g z (Modified Cam Clay)", k0_ref * sv_base / 1e3, H0));
   rec.extra["k0_sph"] = k0_sph;
   rec.extra["k0_reference"] = k0_ref;
   rec.extra["k0_particles"] = k0_n;

@@ -66,10 +66,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const double H = body.hi[1] - body.lo[1], sv_base = soil.density * g * H;
   rec.series.push_back(s_v);
   rec.series.push_back(s_h);
-  rec.series.push_back({"rho g d (equilibrium)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,
-                        {0.0, sv_base / 1e3}, {0.0, -H}});
-  rec.series.push_back({"K0 rho g d, K0 = nu/(1 - nu)", "analytical", "stress_profile", s_v.xlabel, s_v.ylabel,
-                        {0.0, k0 * sv_base / 1e3}, {0.0, -H}});
+  rec.series.push_back(linear_depth_profile(s_v, "rho g d (equilibrium)", sv_base / 1e3, H));
+  rec.series.push_back(linear_depth_profile(s_v, "K0 rho g d, K0 = nu/(1 - nu)", k0 * sv_base / 1e3, H));
   rec.extra["poisson_ratio"] = nu;
   rec.extra["k0_reference"] = k0;
   rec.extra["column_width_m"] = body.hi[0] - body.lo[0];
