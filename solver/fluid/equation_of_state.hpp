@@ -35,6 +35,13 @@ struct TaitEos {
     const double e = 1.0 - 1.0 / gamma;
     return B * (std::pow(1.0 + e * rho0 * g * depth / B, 1.0 / e) - 1.0) + p_bg;
   }
+  // Its inverse: the pressure head w(p)/g = integral dp / (rho g) of the Tait fluid, the depth below a
+  // free surface at which a resting fluid has pressure p; y + pressure_head(p) is the total head, constant
+  // in resting Tait water (seepage cases read heads with it).
+  double pressure_head(double g, double p) const {
+    const double e = 1.0 - 1.0 / gamma;
+    return B / (e * rho0 * g) * (std::pow(std::max((p - p_bg) / B + 1.0, 1e-9), e) - 1.0);
+  }
   // Density difference of two neighbours of a resting fluid, rho_i - rho_j, with g_dot_r = g . (r_i - r_j):
   // p_i - p_j = rho0 g . r_ij through the Tait equation about rho0 (Fourtakas et al. 2019, Comput.
   // Fluids 190, 346-361, eq. 17: rho^H_ij = rho0 [(1 + rho0 g z_ij / B)^(1/gamma) - 1]), to first order

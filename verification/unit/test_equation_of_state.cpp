@@ -33,6 +33,15 @@ TEST(TaitEos, HydrostaticClosedFormMatchesOdeIntegration) {
     EXPECT_NEAR(eos.hydrostatic_pressure(g, depth), ref.pressure_at_depth(depth), 1e-7 * 1000 * g * H0);
 }
 
+// pressure_head inverts hydrostatic_pressure: the depth at which resting Tait water has pressure p
+TEST(TaitEos, PressureHeadInvertsTheHydrostaticPressure) {
+  const TaitEos eos(water(20));
+  for (double depth : {0.0, 0.05, 0.2, 1.3})
+    EXPECT_NEAR(eos.pressure_head(9.81, eos.hydrostatic_pressure(9.81, depth)), depth, 1e-12);
+  // water is denser under pressure, so rho0 g d is reached above the depth d
+  EXPECT_LT(eos.pressure_head(9.81, 1000 * 9.81 * 0.2), 0.2);
+}
+
 TEST(TaitEos, IncompressibleLimitIsRhoGH) {
   const TaitEos eos(water(1e5));
   EXPECT_NEAR(eos.hydrostatic_pressure(9.81, 0.5), 1000 * 9.81 * 0.5, 1e-6 * 4905);

@@ -87,9 +87,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   const TaitEos eos(scene.materials.front());
   const double grav = -scene.gravity[1];
   const double k = scene.find_soil("sand")->hydraulic_conductivity;
-  // w(p) / g: the pressure head of Tait water, (p/B + 1)^(1 - 1/gamma) - 1 scaled (see header)
-  const double e = 1.0 - 1.0 / eos.gamma, scale = eos.B / (e * eos.rho0 * grav);
-  auto head = [&](double y, double p) { return y + scale * (std::pow(std::max((p - eos.p_bg) / eos.B + 1.0, 1e-9), e) - 1.0); };
+  auto head = [&](double y, double p) { return y + eos.pressure_head(grav, p); };
 
   Simulation sim(scene);
   Record rec = start_record(cfg, ctx);
