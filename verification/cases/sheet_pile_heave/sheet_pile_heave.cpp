@@ -86,17 +86,20 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
   Series rise{"SPH", "simulation", "prism_uplift", "t [s]", "mean uplift of the prism / dx", {}, {}};
   double next = 0, sigma0 = NAN, H_max = -1, t_max = 0, uplift_at_max = 0;
   bool dropped = false;
+  double eta_at_max = NAN;  // the SPH's mean excess head / H on the prism's base at the critical head
   const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
     if (s.time() < next) return;
     next += 0.01;
     const Particles& P = s.particles();
     const auto& syy = P.extra_fields().at(SoilFields::yy);
-    double up = 0, down = 0, sig = 0, lift = 0;
-    int nu = 0, nd = 0, ns = 0, nl = 0;
+    double up = 0, down = 0, sig = 0, lift = 0, hb = 0;
+    int nu = 0, nd = 0, ns = 0, nl = 0, nb = 0;
     const double clear = 1.5 * g.dx;
     for (std::size_t j = 0; j < P.size(); ++j) {
       const double x = P.x[j], y = P.y[j];
-      if (P.kind[j] == Kind::Fluid && y > clear && y < g.Hd - clear) {  // the reservoirs, away from ground, surface, walls
+      if (P.kind[j] == Kind::Fluid && in_prism(x) && std::abs(y + g.s) < 0.5 * g.dx) {  // pore water on the prism's base
+        hb += y + eos.pressure_head(grav, P.p[j]); ++nb;
+      } else if (P.kind[j] == Kind::Fluid && y > clear && y < g.Hd - clear) {  // the reservoirs, away from ground, surface, walls
         const double h = y + eos.pressure_head(grav, P.p[j]);
         if (x < -a - 3 * g.dx && x > -g.W + 3 * g.dx) { up += h; ++nu; }
         if (x > a + 3 * g.dx && x < g.W - 3 * g.dx) { down += h; ++nd; }
@@ -106,7 +109,7 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
         if (yi > -g.s) { lift += y - yi; ++nl; }
       }
     }
-    if (!nu || !nd || !ns || !nl) return;
+    if (!nu || !nd || !ns || !nl || !nb) return;
     const double H = up / nu - down / nd, sigma = sig / ns, uplift = lift / nl;
     if (std::isnan(sigma0)) sigma0 = sigma;
     head.x.push_back(s.time()); head.y.push_back(H / (gamma_ratio * g.s));
@@ -114,7 +117,7 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
     rise.x.push_back(s.time()); rise.y.push_back(uplift / g.dx);
     // the first peak: the largest H before H falls 1% below it (the heave; later the loosened sand
     // plateaus around it)
-    if (!dropped && H > H_max) { H_max = H; t_max = s.time(); uplift_at_max = uplift; }
+    if (!dropped && H > H_max) { H_max = H; t_max = s.time(); uplift_at_max = uplift; eta_at_max = (hb / nb - down / nd) / H; }
     dropped = dropped || (H_max > gamma_ratio * g.s && H < 0.99 * H_max);  // past the start's noise
   }, ctx.progress);
   for (const Series* sr : {&head, &stress, &rise}) rec.series.push_back(*sr);
@@ -129,6 +132,9 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
   // vertical gradient over the top spacing next to it
   const double i_face = fd.head(a + 0.5 * g.dx, -g.dx) / g.dx;
   const double Hc_exit = gamma_ratio / i_face;
+  // the column of soil one spacing wide against the smooth face, the narrowest prism (no shear on the
+  // pile side): its base carries gamma_w H h(face, -s)
+  const double Hc_face = gamma_ratio * g.s / fd.head(a + 0.5 * g.dx, -g.s);
   const reference::ThinSheetPile thin{sT};
   const double Hc_exit_thin = gamma_ratio * g.s / (thin.exit_gradient_at_face_times_T_over_H() * sT);
   const double uplift_end = rise.y.empty() ? 0.0 : rise.y.back() * g.dx;
@@ -149,8 +155,10 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
   rec.extra["prism_uplift_at_critical_head_m"] = uplift_at_max;
   rec.extra["prism_uplift_at_end_m"] = uplift_end;
   rec.extra["prism_eta_finite_volume"] = eta;
+  rec.extra["prism_eta_sph_at_critical_head"] = eta_at_max;
   rec.extra["prism_critical_head_gw_over_gs_s_finite_volume"] = Hc_prism / (gamma_ratio * g.s);
   rec.extra["exit_gradient_critical_head_gw_over_gs_s_finite_volume"] = Hc_exit / (gamma_ratio * g.s);
+  rec.extra["face_column_critical_head_gw_over_gs_s_finite_volume"] = Hc_face / (gamma_ratio * g.s);
   rec.extra["exit_gradient_critical_head_gw_over_gs_s_thin_pile"] = Hc_exit_thin / (gamma_ratio * g.s);
   rec.extra["heaved"] = heaved;
   // one-sided bounds: the prism leaves out resistances (a head above it is expected, within the excess
