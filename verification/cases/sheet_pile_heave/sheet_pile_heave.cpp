@@ -20,6 +20,7 @@
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
 #include "harness/run_stats.hpp"
+#include "harness/sheet_pile_scene.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph::verify {
@@ -28,13 +29,6 @@ namespace {
 
 using nlohmann::json;
 
-json box(double x0, double y0, double x1, double y1) { return json{{"min", {x0, y0}}, {"max", {x1, y1}}}; }
-json polygon(std::initializer_list<std::array<double, 2>> v) {
-  json p = json::array();
-  for (const auto& q : v) p.push_back({q[0], q[1]});
-  return json{{"type", "polygon"}, {"vertices", p}};
-}
-
 struct Geometry {
   double T, W, s, t, Hd, top, dx;
 };
@@ -42,20 +36,11 @@ struct Geometry {
 // Both reservoirs start at the downstream level Hd (H = 0); the piston, 4 dx thick, rests on the
 // upstream water between the side wall and the pile and moves down at `speed`, reached over `ramp`.
 void build_scene(json& sc, const Geometry& g, double speed, double ramp) {
-  const double a = 0.5 * g.t;
-  sc["bodies"] = json::array({
-      {{"material", "water"}, {"initial", "hydrostatic"},
-       {"shape", polygon({{-g.W, -g.T}, {0, -g.T}, {0, -g.s}, {-a, -g.s}, {-a, g.Hd}, {-g.W, g.Hd}})}},
-      {{"material", "water"}, {"initial", "hydrostatic"},
-       {"shape", polygon({{0, -g.T}, {g.W, -g.T}, {g.W, g.Hd}, {a, g.Hd}, {a, -g.s}, {0, -g.s}})}},
-      {{"material", "sand"}, {"initial", "geostatic"},
-       {"shape", polygon({{-g.W, -g.T}, {g.W, -g.T}, {g.W, 0}, {a, 0}, {a, -g.s}, {-a, -g.s}, {-a, 0}, {-g.W, 0}})}}});
-  sc["walls"]["containers"] = json::array({box(-g.W, -g.T, g.W, g.top)});
-  sc["walls"]["containers"][0]["open"] = {"top"};
-  json piston = box(-g.W, g.Hd, -a, g.Hd + 4 * g.dx);
+  build_sheet_pile_scene(sc, {g.T, g.W, g.s, g.t}, g.Hd, g.Hd, g.top, g.dx, false);
+  json piston = box_json(-g.W, g.Hd, -0.5 * g.t, g.Hd + 4 * g.dx);
   piston["velocity"] = {0.0, -speed};
   piston["ramp"] = ramp;
-  sc["walls"]["blocks"] = json::array({box(-a, -g.s, a, g.top - g.dx), piston});
+  sc["walls"]["blocks"].push_back(piston);
 }
 
 Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {

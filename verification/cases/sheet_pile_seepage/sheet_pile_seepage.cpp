@@ -23,6 +23,7 @@
 #include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
+#include "harness/sheet_pile_scene.hpp"
 
 namespace geosph::verify {
 
@@ -30,33 +31,9 @@ namespace {
 
 using nlohmann::json;
 
-json box(double x0, double y0, double x1, double y1) { return json{{"min", {x0, y0}}, {"max", {x1, y1}}}; }
-json polygon(std::initializer_list<std::array<double, 2>> v) {
-  json p = json::array();
-  for (const auto& q : v) p.push_back({q[0], q[1]});
-  return json{{"type", "polygon"}, {"vertices", p}};
-}
-
 struct Geometry {
   double T, W, s, t, H, Hd, dx;
 };
-
-// The scene's bodies and walls for this embedment and spacing: the pile is `pile_thickness_dx` spacings
-// thick, the thinnest wall block whose two faces' wall particles never share a water neighbour
-// (support 2h = 2.6 dx with the cubic spline).
-void build_scene(json& sc, const Geometry& g, double top) {
-  const double a = 0.5 * g.t;
-  sc["bodies"] = json::array({
-      {{"material", "water"}, {"initial", "hydrostatic"},
-       {"shape", polygon({{-g.W, -g.T}, {0, -g.T}, {0, -g.s}, {-a, -g.s}, {-a, g.Hd + g.H}, {-g.W, g.Hd + g.H}})}},
-      {{"material", "water"}, {"initial", "hydrostatic"},
-       {"shape", polygon({{0, -g.T}, {g.W, -g.T}, {g.W, g.Hd}, {a, g.Hd}, {a, -g.s}, {0, -g.s}})}},
-      {{"material", "sand"}, {"initial", "geostatic"}, {"fixed", true},
-       {"shape", polygon({{-g.W, -g.T}, {g.W, -g.T}, {g.W, 0}, {a, 0}, {a, -g.s}, {-a, -g.s}, {-a, 0}, {-g.W, 0}})}}});
-  sc["walls"]["containers"] = json::array({box(-g.W, -g.T, g.W, top)});
-  sc["walls"]["containers"][0]["open"] = {"top"};
-  sc["walls"]["blocks"] = json::array({box(-a, -g.s, a, top - g.dx)});
-}
 
 // Time-averaged head of the pore water on the lattice cells of the layer (the water hardly moves in a
 // run: a few millimetres), with the mean position of what fell in each cell.
@@ -82,7 +59,9 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
   Geometry g{G.at("T"), G.at("W"), 0, G.at("pile_thickness_dx").get<double>() * spacing, G.at("H"), G.at("downstream_depth"), spacing};
   g.s = sT * g.T;
   const double top = g.Hd + g.H + G.at("freeboard").get<double>();
-  build_scene(cfg.scene_json, g, top);
+  // the pile is `pile_thickness_dx` spacings thick, the thinnest wall block whose two faces' wall particles
+  // never share a water neighbour (support 2h = 2.6 dx with the cubic spline)
+  build_sheet_pile_scene(cfg.scene_json, {g.T, g.W, g.s, g.t}, g.Hd + g.H, g.Hd, top, g.dx, true);
   const Scene scene = cfg.scene(spacing);
   const TaitEos eos(scene.materials.front());
   const double grav = -scene.gravity[1];
