@@ -83,25 +83,24 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   return rec;
 }
 
+// case.json "variants": the Poisson ratio (so K0) and the column's width.
+Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::string& variant, double spacing) {
+  CaseConfig cfg = base;
+  const nlohmann::json& v = cfg.spec.at("variants").at(variant);
+  cfg.scene_json["materials"]["soil"]["poisson_ratio"] = v.at("poisson_ratio");
+  const double width = v.at("width").get<double>();
+  cfg.scene_json["bodies"][0]["max"][0] = width;
+  cfg.scene_json["walls"]["containers"][0]["max"][0] = width;
+  cfg.scene_json["domain"]["max"][0] = width + 0.5;
+  Record rec = run_at(cfg, ctx, spacing);
+  rec.variant = variant;
+  return rec;
+}
+
 }  // namespace
 
-// case.json "variants": the Poisson ratio (so K0) and the column's width, each run at the level's spacings.
 std::vector<Record> run_gravity_loading_column(const CaseContext& ctx, const std::string& case_name) {
-  const CaseConfig base = load_case(ctx, case_name);
-  std::vector<Record> out;
-  for (const auto& [name, v] : base.spec.at("variants").items()) {
-    CaseConfig cfg = base;
-    cfg.scene_json["materials"]["soil"]["poisson_ratio"] = v.at("poisson_ratio");
-    const double width = v.at("width").get<double>();
-    cfg.scene_json["bodies"][0]["max"][0] = width;
-    cfg.scene_json["walls"]["containers"][0]["max"][0] = width;
-    cfg.scene_json["domain"]["max"][0] = width + 0.5;
-    for (double dx : cfg.level_numbers("dx")) {
-      out.push_back(run_at(cfg, ctx, dx));
-      out.back().variant = name;
-    }
-  }
-  return out;
+  return run_each_variant(ctx, case_name, run_variant);
 }
 
 GEOSPH_CASE_DRIVER(gravity_loading_column, run_gravity_loading_column);
