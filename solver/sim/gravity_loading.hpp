@@ -32,7 +32,7 @@ struct GravityLoadingResult {
 // Cundall's local damping on the solid particles' accelerations (moving solids only).
 void apply_local_damping(Particles& P, double alpha);
 // The solids' mean unbalanced force over their mean weight, sum_i m_i |a_i| / sum_i m_i |g|, a_i the
-// undamped acceleration (gravity included) of the moving solid particles (a fixed part carries a
+// undamped acceleration (gravity, the contact and every other force included) of the moving solid particles (a fixed part carries a
 // reaction): the equilibrium ratio of FLAC (Itasca), zero only at equilibrium. The kinetic energy alone
 // also vanishes at every turning point of an oscillation: a column stopped there by the energy criterion
 // kept its first mode, sigma_v 3% low (nu = 0.2) to 5% high (nu = 0.4) (issue 17, item 3).
