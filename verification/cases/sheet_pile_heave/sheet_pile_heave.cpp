@@ -107,49 +107,47 @@ Record run_at(const CaseConfig& base, const CaseContext& ctx, double spacing) {
   }, ctx.progress);
   for (const Series* sr : {&head, &stress, &rise}) rec.series.push_back(*sr);
 
-  // Terzaghi's prism on the finite-volume head field of this geometry: eta = mean h / H on its base
+  // The criteria in units of gamma' s / gamma_w, on the finite-volume head field of this geometry:
+  // Terzaghi's prism, eta = mean h / H on its base, heaves at 1 / eta;
   const reference::SheetPileLaplace fd({g.T, g.W, g.s, g.t, g.dx / 8});
   double eta = 0;
   const int samples = 200;
   for (int k = 0; k < samples; ++k) eta += fd.head(a + (k + 0.5) / samples * 0.5 * g.s, -g.s) / samples;
-  const double Hc_prism = gamma_ratio * g.s / eta;
-  // the exit-gradient criterion on the same field: i = gamma'/gamma_w at the downstream face, the mean
-  // vertical gradient over the top spacing next to it
-  const double i_face = fd.head(a + 0.5 * g.dx, -g.dx) / g.dx;
-  const double Hc_exit = gamma_ratio / i_face;
+  const double prism = 1.0 / eta;
+  // the exit gradient i = gamma'/gamma_w at the downstream face, the mean vertical gradient over the top
+  // spacing next to it;
+  const double exit = g.dx / (fd.head(a + 0.5 * g.dx, -g.dx) * g.s);
   // the column of soil one spacing wide against the smooth face, the narrowest prism (no shear on the
-  // pile side): its base carries gamma_w H h(face, -s)
-  const double Hc_face = gamma_ratio * g.s / fd.head(a + 0.5 * g.dx, -g.s);
-  const reference::ThinSheetPile thin{sT};
-  const double Hc_exit_thin = gamma_ratio * g.s / (thin.exit_gradient_at_face_times_T_over_H() * sT);
+  // pile side), whose base carries gamma_w H h(face, -s); and the thin pile's exit gradient (Harr 1962)
+  const double face = 1.0 / fd.head(a + 0.5 * g.dx, -g.s);
+  const double exit_thin = 1.0 / (reference::ThinSheetPile{sT}.exit_gradient_at_face_times_T_over_H() * sT);
+  const double Hc = H_max / (gamma_ratio * g.s);
   const double uplift_end = rise.y.empty() ? 0.0 : rise.y.back() * g.dx;
   // the layer failed within the run: H fell from its peak and the prism rose by more than 0.02 dx (its
   // elastic rebound as its effective stress falls is ~0.004 dx: 2 kPa over s with E = 5 MPa)
   const bool heaved = ok && dropped && uplift_end > 0.02 * g.dx;
-  head.name = "Terzaghi's prism (finite volume, this pile)";
-  head.role = "analytical";
-  head.y.assign(head.x.size(), Hc_prism / (gamma_ratio * g.s));
-  rec.series.push_back(head);
+  rec.series.push_back({"Terzaghi's prism (finite volume, this pile)", "analytical", head.plot, head.xlabel, head.ylabel,
+                        {head.x.empty() ? 0.0 : head.x.front(), head.x.empty() ? 0.0 : head.x.back()}, {prism, prism}});
 
   rec.extra["s_over_T"] = sT;
   rec.extra["pile_thickness_over_T"] = g.t / g.T;
   rec.extra["gamma_buoyant_over_gamma_w"] = gamma_ratio;
   rec.extra["critical_head_m"] = H_max;
-  rec.extra["critical_head_gw_over_gs_s"] = H_max / (gamma_ratio * g.s);
+  rec.extra["critical_head_gw_over_gs_s"] = Hc;
   rec.extra["critical_head_time_s"] = t_max;
   rec.extra["prism_uplift_at_critical_head_m"] = uplift_at_max;
   rec.extra["prism_uplift_at_end_m"] = uplift_end;
   rec.extra["prism_eta_finite_volume"] = eta;
   rec.extra["prism_eta_sph_at_critical_head"] = eta_at_max;
-  rec.extra["prism_critical_head_gw_over_gs_s_finite_volume"] = Hc_prism / (gamma_ratio * g.s);
-  rec.extra["exit_gradient_critical_head_gw_over_gs_s_finite_volume"] = Hc_exit / (gamma_ratio * g.s);
-  rec.extra["face_column_critical_head_gw_over_gs_s_finite_volume"] = Hc_face / (gamma_ratio * g.s);
-  rec.extra["exit_gradient_critical_head_gw_over_gs_s_thin_pile"] = Hc_exit_thin / (gamma_ratio * g.s);
+  rec.extra["prism_critical_head_gw_over_gs_s_finite_volume"] = prism;
+  rec.extra["exit_gradient_critical_head_gw_over_gs_s_finite_volume"] = exit;
+  rec.extra["face_column_critical_head_gw_over_gs_s_finite_volume"] = face;
+  rec.extra["exit_gradient_critical_head_gw_over_gs_s_thin_pile"] = exit_thin;
   rec.extra["heaved"] = heaved;
   // one-sided bounds: the prism leaves out resistances (a head above it is expected, within the excess
   // tolerance); a head below it by more than the geometry's dx/2 uncertainty is a premature failure
-  add_case_metric(rec, cfg, "critical_head_shortfall", std::max(0.0, 1.0 - H_max / Hc_prism), heaved);
-  add_case_metric(rec, cfg, "critical_head_excess", std::max(0.0, H_max / Hc_prism - 1.0), heaved);
+  add_case_metric(rec, cfg, "critical_head_shortfall", std::max(0.0, 1.0 - Hc / prism), heaved);
+  add_case_metric(rec, cfg, "critical_head_excess", std::max(0.0, Hc / prism - 1.0), heaved);
   rec.snapshot = field_snapshot(sim, SoilFields::plastic_strain, "-");
   return rec;
 }
