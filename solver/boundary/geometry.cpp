@@ -180,6 +180,8 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
     if (b.placed_at > 0 && placed) placed->push_back(std::move(later));
   }
 
+  // mirror walls have no particles: their images are made at every step (boundary/mirror_wall.hpp)
+  if (s.walls.type == "mirror") return P;
   const int L = wall_layers(s);
   const Kind wall = s.walls.type == "repulsive" ? Kind::RepulsiveWall : Kind::DummyWall;
   // Morris and ghost walls need each wall particle's place relative to the surface

@@ -16,6 +16,7 @@ FluidForces::FluidForces(const Scene& scene) : scene_(scene), mats_(scene.materi
   for (const auto& m : mats_) eos_.emplace_back(m);
   free_slip_walls_ = scene.walls.slip == "free_slip";
   morris_walls_ = scene.walls.type == "morris";
+  if (scene.walls.type == "mirror") mirror_ = std::make_shared<const MirrorWalls>(scene);
   const double c0 = max_sound_speed();
   repulsive_D_ = scene.walls.repulsive_strength > 0 ? scene.walls.repulsive_strength : 0.05 * c0 * c0;
   // r0: the fluid's initial distance from the wall line (Monaghan 1994), dx (boundary/geometry.cpp)
@@ -63,6 +64,7 @@ void FluidForces::rates(Particles& P, const CellList& cells, const std::array<do
     if (scene_.dim == 2) run.template operator()<2>(k);
     else run.template operator()<3>(k);
   }, make_kernel(scene_.kernel, scene_.dim, scene_.h()));
+  if (mirror_) add_mirror_images(P, cells, g);
   correct_density(P, dt_predicted);
 }
 

@@ -13,9 +13,12 @@
 // with eta^2 = 0.01 h^2 (1e-4 h^2 in the laminar term, see fluid_forces.cpp). Dummy wall particles enter with the pressure, density and (no-slip)
 // velocity extrapolated by DummyWalls (Adami, Hu & Adams 2012); Morris walls with the dummy pressure and
 // the relative velocity beta (v_i - v_wall) in the viscous terms (Morris, Fox & Zhu 1997, boundary/morris_wall.hpp).
+// Mirror walls add the same pair terms with the images of the neighbours (boundary/mirror_wall.hpp).
 #pragma once
+#include <memory>
 #include <vector>
 
+#include "boundary/mirror_wall.hpp"
 #include "core/cell_list.hpp"
 #include "core/kernels.hpp"
 #include "core/particles.hpp"
@@ -46,6 +49,11 @@ class FluidForces {
   template <int Dim, bool MixedSlip, bool Porous, bool Morris, class K>
   void rates_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
   void correct_density(Particles& P, double dt_predicted) const;
+  // Mirror walls (boundary/mirror_wall.hpp): adds the images' share to the rates and accelerations
+  // rates_with wrote (fluid/fluid_mirror_images.cpp).
+  void add_mirror_images(Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
+  template <int Dim, class K>
+  void mirror_images_with(const K& kernel, Particles& P, const CellList& cells, const std::array<double, 3>& g) const;
 
   // porosity of the pore water (two-phase scenes, coupling/seepage.hpp), else null
   const double* porosity(const Particles& P) const;
@@ -59,6 +67,7 @@ class FluidForces {
   std::vector<TaitEos> eos_;
   std::vector<FluidMaterial> mats_;
   bool free_slip_walls_, morris_walls_;
+  std::shared_ptr<const MirrorWalls> mirror_;  // walls.type "mirror" only
   double repulsive_D_, repulsive_r0_;
   mutable std::vector<double> pressure_over_rho2_, volume_, drho_new_;  // scratch, per particle
 };

@@ -118,6 +118,28 @@ class PolygonArea {
     for (const auto& h : holes_) inside = inside && winding_number(h, x, y) == 0;
     return inside ? -d : d;
   }
+  // Each edge within reach of (x, y): its line at the edge point nearest to (x, y), the normal the
+  // edge's perpendicular pointing out of the area (the side where the distance grows).
+  void edge_planes(double x, double y, double reach, std::vector<TangentPlane>& out) const {
+    const auto ring = [&](const Ring& r) {
+      for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+        const P2& a = r[i];
+        const P2& b = r[(i + 1) % n];
+        const double ex = b[0] - a[0], ey = b[1] - a[1], len = std::hypot(ex, ey);
+        const double t = std::clamp(((x - a[0]) * ex + (y - a[1]) * ey) / (len * len), 0.0, 1.0);
+        TangentPlane tp;
+        tp.point = {a[0] + t * ex, a[1] + t * ey, 0.0};
+        if (std::hypot(x - tp.point[0], y - tp.point[1]) >= reach) continue;
+        tp.normal = {ey / len, -ex / len, 0.0};
+        const double probe = 1e-6 * len;  // off the edge's middle, where no other edge is nearer
+        const double mx = a[0] + 0.5 * ex, my = a[1] + 0.5 * ey;
+        if (distance(mx + probe * tp.normal[0], my + probe * tp.normal[1]) < 0) tp.normal = {-tp.normal[0], -tp.normal[1], 0.0};
+        out.push_back(tp);
+      }
+    };
+    ring(outline_);
+    for (const auto& h : holes_) ring(h);
+  }
   double area() const { return area_; }
   const Point& lo() const { return lo_; }
   const Point& hi() const { return hi_; }
@@ -145,6 +167,9 @@ class Polygon final : public Shape {
   double distance(const Point& p) const override { return a_.distance(p[0], p[1]); }
   Bounds bounds() const override { return {a_.lo(), a_.hi()}; }
   double exact_measure() const override { return a_.area(); }
+  void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const override {
+    a_.edge_planes(p[0], p[1], reach, out);
+  }
   std::string describe() const override {
     return "polygon (" + counted(a_.vertices(), "vertex") + (a_.holes() ? ", " + counted(a_.holes(), "hole") : "") + ")";
   }

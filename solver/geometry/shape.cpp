@@ -21,6 +21,16 @@ double slab_distance(const double* e, int n) {
   return std::min(inside, 0.0) + std::sqrt(out2);
 }
 
+double point_distance(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The planes of `all` whose point lies on the surface of `s` (within 1e-9 reach), appended to out.
+void keep_on_surface(const Shape& s, const std::vector<TangentPlane>& all, double reach, std::vector<TangentPlane>& out) {
+  for (const auto& t : all)
+    if (std::abs(s.distance(t.point)) <= 1e-9 * reach) out.push_back(t);
+}
+
 class Box final : public Shape {
  public:
   Box(int dim, Point lo, Point hi) : Shape(dim), lo_(lo), hi_(hi) {}
@@ -30,6 +40,17 @@ class Box final : public Shape {
     return slab_distance(e, dim());
   }
   Bounds bounds() const override { return {lo_, hi_}; }
+  // each face: its plane at the face point nearest to p
+  void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const override {
+    for (int a = 0; a < dim(); ++a)
+      for (const bool upper : {false, true}) {
+        TangentPlane t;
+        for (int b = 0; b < dim(); ++b) t.point[b] = std::clamp(p[b], lo_[b], hi_[b]);
+        t.point[a] = upper ? hi_[a] : lo_[a];
+        t.normal[a] = upper ? 1.0 : -1.0;
+        if (point_distance(p, t.point) < reach) out.push_back(t);
+      }
+  }
   double exact_measure() const override {
     double v = 1;
     for (int a = 0; a < dim(); ++a) v *= hi_[a] - lo_[a];
@@ -80,6 +101,31 @@ class Cylinder final : public Shape {
     }
     return b;
   }
+  // the mantle (the radial plane at the nearest mantle point) and the two caps
+  void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const override {
+    double rad[3] = {0, 0, 0}, rlen = 0;
+    for (int a = 0; a < 3; ++a)
+      if (a != axis_) { rad[a] = p[a] - c_[a]; rlen += rad[a] * rad[a]; }
+    rlen = std::sqrt(rlen);
+    const double half = 0.5 * len_;
+    const double along = std::clamp(p[axis_] - c_[axis_], -half, half);
+    if (rlen > 0) {
+      TangentPlane t;
+      for (int a = 0; a < 3; ++a)
+        if (a != axis_) { t.normal[a] = rad[a] / rlen; t.point[a] = c_[a] + r_ * t.normal[a]; }
+      t.point[axis_] = c_[axis_] + along;
+      if (point_distance(p, t.point) < reach) out.push_back(t);
+    }
+    const double shrink = rlen > r_ ? r_ / rlen : 1.0;  // the nearest cap point: p's radial offset within r
+    for (const double side : {-1.0, 1.0}) {
+      TangentPlane t;
+      for (int a = 0; a < 3; ++a)
+        if (a != axis_) t.point[a] = c_[a] + shrink * rad[a];
+      t.point[axis_] = c_[axis_] + side * half;
+      t.normal[axis_] = side;
+      if (point_distance(p, t.point) < reach) out.push_back(t);
+    }
+  }
   double exact_measure() const override { return kPi * r_ * r_ * len_; }
   std::string describe() const override { return "cylinder"; }
 
@@ -105,6 +151,12 @@ class Union final : public Shape {
     }
     return b;
   }
+  // the parts' tangent planes whose point lies on the union's surface (not inside another part)
+  void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const override {
+    std::vector<TangentPlane> all;
+    for (const auto& s : parts_) s->tangent_planes(p, reach, all);
+    keep_on_surface(*this, all, reach, out);
+  }
   double exact_measure() const override { return -1; }
   std::string describe() const override { return "union of " + std::to_string(parts_.size()) + " shapes"; }
 
@@ -121,6 +173,19 @@ class Difference final : public Shape {
     return d;
   }
   Bounds bounds() const override { return parts_.front()->bounds(); }
+  // the first part's tangent planes and the others' turned inside out (their outward normal points into
+  // the hole), those whose point lies on the difference's surface
+  void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const override {
+    std::vector<TangentPlane> all;
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      const std::size_t first = all.size();
+      parts_[k]->tangent_planes(p, reach, all);
+      if (k > 0)
+        for (std::size_t m = first; m < all.size(); ++m)
+          for (auto& c : all[m].normal) c = -c;
+    }
+    keep_on_surface(*this, all, reach, out);
+  }
   double exact_measure() const override { return -1; }
   std::string describe() const override {
     return parts_.front()->describe() + " less " + std::to_string(parts_.size() - 1) + " shape(s)";
@@ -152,6 +217,15 @@ double cell_measure(const Shape& s, const Point& lo, double h, int levels) {
 }
 
 }  // namespace
+
+void Shape::tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const {
+  const double d = distance(p);
+  if (!(std::abs(d) < reach)) return;
+  TangentPlane t;
+  t.normal = outward_normal(*this, p, 1e-4 * reach);
+  for (int a = 0; a < dim_; ++a) t.point[a] = p[a] - d * t.normal[a];
+  out.push_back(t);
+}
 
 bool Shape::contains(const Point& p, double dx) const {
   static constexpr double kTilt[3] = {0.7236, 0.5491, 0.4184};  // a unit vector of no lattice or edge direction

@@ -16,6 +16,11 @@ struct Bounds {
   Point lo{}, hi{};
 };
 
+// A tangent plane of a shape's surface: its point on the surface and the unit outward normal there.
+struct TangentPlane {
+  Point point{}, normal{};
+};
+
 class Shape {
  public:
   explicit Shape(int dim) : dim_(dim) {}
@@ -35,6 +40,12 @@ class Shape {
   // lattice line shares (simulation of simplicity, Edelsbrunner & Muecke 1990), so of two shapes that
   // share a surface exactly one holds each of its points.
   bool contains(const Point& p, double dx) const;
+  // The tangent planes, at their nearest points to p, of the smooth pieces of the surface (faces,
+  // edges of a polygon, a cylinder's mantle and caps) that come within `reach` of p, appended to out:
+  // the multiple boundary tangents of a point near a corner (boundary/mirror_wall.hpp). This default
+  // gives the one tangent at the nearest surface point (the distance's gradient); box, cylinder,
+  // polygon, union and difference list each piece.
+  virtual void tangent_planes(const Point& p, double reach, std::vector<TangentPlane>& out) const;
   int dim() const { return dim_; }
 
  private:

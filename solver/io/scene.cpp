@@ -409,7 +409,7 @@ void validate_scene(const Scene& s) {
     }
   }
   // every body and every wall layer must lie inside the domain
-  const double wall_thick = wall_layers(s) * s.dx;
+  const double wall_thick = s.walls.type == "mirror" ? 0.0 : wall_layers(s) * s.dx;  // mirror walls: no particles
   for (std::size_t b = 0; b < s.bodies.size(); ++b)
     for (int a = 0; a < s.dim; ++a)
       if (s.bodies[b].lo[a] < s.domain.lo[a] || s.bodies[b].hi[a] > s.domain.hi[a])
@@ -500,6 +500,9 @@ void validate_scene(const Scene& s) {
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy" && s.walls.type != "ghost")
     fail("walls.type", "soil needs dummy or ghost walls (they carry the soil's stress); \"" + s.walls.type +
                            "\" walls are for fluids only");
+  if (s.walls.type == "mirror" && !s.walls.blocks.empty())
+    fail("walls.blocks", "are not available with walls.type \"mirror\" (mirror walls are fixed walls without particles; "
+                         "a block, which may move or hold a structure, is made of particles: use \"dummy\" or \"ghost\")");
   if (s.walls.type == "morris") {  // Morris et al.'s (1997) treatment is a no-slip condition
     const char* why = "is \"free_slip\", but Morris walls (walls.type \"morris\") are no-slip walls; use walls.type "
                       "\"dummy\" for free slip";

@@ -15,6 +15,7 @@
 
 #include "boundary/dummy_wall.hpp"
 #include "boundary/geometry.hpp"
+#include "boundary/mirror_wall.hpp"
 #include "coupling/seepage.hpp"
 #include "coupling/soil_structure_contact.hpp"
 #include "boundary/soil_wall.hpp"
@@ -61,6 +62,8 @@ class Simulation {
   long steps() const { return step_; }
   double dt() const { return dt_; }
   std::size_t fluid_count() const { return n_fluid_; }
+  // mirror walls: fluid particles reflected back across a wall they crossed, over the run so far
+  std::size_t mirror_reflections() const { return mirror_reflections_; }
   std::size_t soil_count() const { return n_soil_; }
   std::size_t structure_count() const { return n_structure_; }  // deformable and rigid structure particles
   // particles the step integrates or moves: fluid, soil and structures; walls excluded
@@ -115,6 +118,8 @@ class Simulation {
   double pair_skin_ = 0;  // the pair list's skin beyond the kernel support [m] (core/cell_list.hpp)
   std::unique_ptr<FluidForces> fluid_;
   std::unique_ptr<DummyWalls> dummy_walls_;
+  std::unique_ptr<MirrorWalls> mirror_walls_;  // walls.type "mirror": their crossings (boundary/mirror_wall.hpp)
+  std::size_t mirror_reflections_ = 0;
   std::unique_ptr<SoilForces> soil_;
   std::unique_ptr<SoilWalls> soil_walls_;
   std::unique_ptr<RigidMotions> rigid_;

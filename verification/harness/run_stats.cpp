@@ -62,6 +62,8 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   rec.steps += sim.steps() - steps0;
   rec.wall_s += wall;
+  // mirror walls: the fluid particles bounced back across a wall (boundary/mirror_wall.hpp)
+  if (s.walls.type == "mirror") rec.extra["mirror_wall_reflections"] = sim.mirror_reflections();
   rec.particle_steps_per_s = rec.wall_s > 0 ? rec.particles * static_cast<double>(rec.steps) / rec.wall_s : 0;
   return ok;
 }

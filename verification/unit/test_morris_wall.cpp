@@ -97,6 +97,6 @@ TEST(MorrisWall, FreeSlipAndSoilAreRejected) {
   j["walls"]["type"] = "morris";
   test::expect_scene_error(j, "walls.type", "soil needs dummy or ghost walls");
   j = morris_channel();
-  j["walls"]["type"] = "mirror";
-  test::expect_scene_error(j, "walls.type", "must be one of {dummy, repulsive, morris, ghost}");
+  j["walls"]["type"] = "image";
+  test::expect_scene_error(j, "walls.type", "must be one of {dummy, repulsive, morris, ghost, mirror}");
 }
