@@ -116,6 +116,10 @@ int cmd_run(const RunOptions& o) {
     std::fprintf(stderr, "  bodies[%zu]: %zu particles, mass %.6g kg%s (density x %s %.6g: %+.2f%%)\n", k, f.particles, f.mass,
                  scene.dim == 2 ? "/m" : "", scene.dim == 2 ? "area" : "volume", f.shape_mass,
                  f.shape_mass > 0 ? 100.0 * (f.mass / f.shape_mass - 1.0) : 0.0);
+    if (f.relaxation.iterations > 0)
+      std::fprintf(stderr, "  bodies[%zu]: relaxed against the mirror walls in %d iterations, kernel-sum gradient h|sum V grad W| "
+                   "mean %.3g -> %.3g, max %.3g -> %.3g\n", k, f.relaxation.iterations, f.relaxation.initial_mean,
+                   f.relaxation.final_mean, f.relaxation.initial_residual, f.relaxation.final_residual);
   }
   if (restarted_from.empty()) {
     out.write(sim.particles(), sim.time(), sim.steps());

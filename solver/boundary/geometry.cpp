@@ -8,6 +8,7 @@
 #include <map>
 
 #include "boundary/body_fields.hpp"
+#include "boundary/mirror_relaxation.hpp"
 #include "boundary/wall_surface.hpp"
 #include "geometry/lattice_fill.hpp"
 #include "core/time_step.hpp"
@@ -132,29 +133,22 @@ BodyFill add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::siz
   return {pts.size(), m.density * vol * static_cast<double>(pts.size()), m.density * body_measure(s, b)};
 }
 
+std::uint16_t fluid_material_index(const Scene& s, const BodySpec& b) {
+  std::uint16_t mat = 0;
+  while (s.materials[mat].name != b.material) ++mat;
+  return mat;
+}
+
 // Fluid body on the lattice: at rest (rho0) or in the Tait hydrostatic state below its highest point.
 BodyFill add_fluid_body(Particles& P, const Scene& s, const BodySpec& b) {
   const double vol = std::pow(s.dx, s.dim);
-  const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
-  std::uint16_t mat = 0;
-  while (s.materials[mat].name != b.material) ++mat;
+  const std::uint16_t mat = fluid_material_index(s, b);
   const TaitEos eos(s.materials[mat]);
-  // depth below the body's highest point, measured along gravity
-  double top = 1e300;
-  for (int c = 0; c < (1 << s.dim); ++c) {
-    double proj = 0;
-    for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
-    top = std::min(top, proj);
-  }
   const auto pts = body_points(s, b);
   double mass = 0;
   for (const auto& pt : pts) {
     const double x = pt[0], y = pt[1], z = pt[2];
-    double rho = eos.rho0;
-    if (b.initial == "hydrostatic" && gmag > 0) {
-      const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
-      rho = eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
-    }
+    const double rho = fluid_initial_density(s, b, x, y, z);
     P.add(x, y, z, rho * vol, rho, Kind::Fluid, mat);
     mass += rho * vol;
     P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
@@ -164,6 +158,21 @@ BodyFill add_fluid_body(Particles& P, const Scene& s, const BodySpec& b) {
 }
 
 }  // namespace
+
+double fluid_initial_density(const Scene& s, const BodySpec& b, double x, double y, double z) {
+  const TaitEos eos(s.materials[fluid_material_index(s, b)]);
+  const double gmag = std::sqrt(s.gravity[0] * s.gravity[0] + s.gravity[1] * s.gravity[1] + s.gravity[2] * s.gravity[2]);
+  if (b.initial != "hydrostatic" || !(gmag > 0)) return eos.rho0;
+  // depth below the body's highest point, measured along gravity
+  double top = 1e300;
+  for (int c = 0; c < (1 << s.dim); ++c) {
+    double proj = 0;
+    for (int a = 0; a < s.dim; ++a) proj += (c >> a & 1 ? b.hi[a] : b.lo[a]) * s.gravity[a];
+    top = std::min(top, proj);
+  }
+  const double depth = (x * s.gravity[0] + y * s.gravity[1] + z * s.gravity[2] - top) / gmag;
+  return eos.density(eos.hydrostatic_pressure(gmag * s.initial_gravity_factor(), depth));
+}
 
 Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vector<Particles>* placed) {
   Particles P;
@@ -175,7 +184,10 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
     Particles later;  // a body placed during the run (construction) is built apart
     later.dim = s.dim;
     Particles& into = b.placed_at > 0 ? later : P;
-    const BodyFill f = s.find_soil(b.material) ? add_soil_body(into, s, b, bi) : add_fluid_body(into, s, b);
+    const std::size_t first = into.size();
+    BodyFill f = s.find_soil(b.material) ? add_soil_body(into, s, b, bi) : add_fluid_body(into, s, b);
+    if (s.walls.type == "mirror" && b.shape && !s.find_soil(b.material))
+      f.relaxation = relax_body_against_mirror_walls(s, b, into, first, into.size() - first);
     if (fills) fills->push_back(f);
     if (b.placed_at > 0 && placed) placed->push_back(std::move(later));
   }

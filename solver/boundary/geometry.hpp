@@ -4,6 +4,7 @@
 #pragma once
 #include <vector>
 
+#include "boundary/mirror_relaxation.hpp"
 #include "core/particles.hpp"
 #include "io/scene.hpp"
 
@@ -14,6 +15,7 @@ namespace geosph {
 struct BodyFill {
   std::size_t particles = 0;
   double mass = 0, shape_mass = 0;
+  RelaxationResult relaxation;  // a shaped fluid body against mirror walls (boundary/mirror_relaxation.hpp)
 };
 
 // With fills, one entry per body (scene order). A body placed during the run (placed_at > 0) is not in
@@ -21,5 +23,8 @@ struct BodyFill {
 Particles build_particles(const Scene& scene, std::vector<BodyFill>* fills = nullptr,
                           std::vector<Particles>* placed = nullptr);
 int wall_layers(const Scene& scene);
+// The initial density of fluid body b's particle at (x, y, z): rho0 at rest, or the Tait hydrostatic
+// state below the body's highest point ("hydrostatic").
+double fluid_initial_density(const Scene& s, const BodySpec& b, double x, double y, double z);
 
 }  // namespace geosph

@@ -165,3 +165,26 @@ TEST(MirrorWall, SceneChecks) {
     EXPECT_NE(std::string(e.what()).find("walls.blocks"), std::string::npos) << e.what();
   }
 }
+
+TEST(MirrorWall, ShapedWaterIsRelaxedAgainstItsSurface) {
+  // water filling a round 2D tank (R/dx = 8): the lattice next to the circle crowds its images until
+  // the packing evens it out, inside the circle
+  auto j = mirror_tank(json::parse(R"({"type": "mirror", "boundaries": [{"shape": {"type": "difference", "parts": [
+      {"type": "box", "min": [0.0, 0.0], "max": [1.0, 1.0]}, {"type": "circle", "centre": [0.5, 0.5], "radius": 0.4}]}}]})"));
+  j["bodies"] = json::parse(R"([{"material": "water", "shape": {"type": "circle", "centre": [0.5, 0.5], "radius": 0.4}}])");
+  const Scene s = parse_scene(j, "ok.json");
+  std::vector<BodyFill> fills;
+  const Particles P = build_particles(s, &fills);
+  ASSERT_EQ(fills.size(), 1u);
+  const RelaxationResult& r = fills[0].relaxation;
+  EXPECT_GT(r.iterations, 0);
+  EXPECT_LT(r.final_mean, 0.2 * r.initial_mean) << r.initial_mean << " -> " << r.final_mean;
+  double outside = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) outside = std::max(outside, std::hypot(P.x[i] - 0.5, P.y[i] - 0.5) - 0.4);
+  EXPECT_LE(outside, 0.0);
+  // other wall types keep the lattice
+  j["walls"]["type"] = "dummy";
+  std::vector<BodyFill> lattice;
+  build_particles(parse_scene(j, "ok.json"), &lattice);
+  EXPECT_EQ(lattice[0].relaxation.iterations, 0);
+}
