@@ -21,6 +21,7 @@ MirrorImage reflection(const double c[3], const double n[3], bool free_slip) {
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) m.R[3 * a + b] -= 2 * n[a] * n[b];
     m.t[a] = 2 * cn * n[a];
+    m.into[a] = -n[a];
   }
   return m;
 }
@@ -62,6 +63,7 @@ void MirrorWalls::images(const double x[3], MirrorSet& set) const {
       MirrorImage single = identity(c.free_slip);
       single.R[4 * f.axis] = -1;
       single.t[f.axis] = 2 * f.position;
+      single.into[f.axis] = -f.sign;
       const std::size_t made = out.size();
       for (std::size_t k = first; k < made; ++k) {
         const MirrorImage& o = out[k];
@@ -69,9 +71,15 @@ void MirrorWalls::images(const double x[3], MirrorSet& set) const {
         MirrorImage comp = o;
         comp.R[4 * f.axis] = -1;
         comp.t[f.axis] = 2 * f.position;
+        comp.into[f.axis] = -f.sign;  // components +-1, normalised below
         out.push_back(comp);
       }
       out.push_back(single);
+    }
+    for (std::size_t k = first; k < out.size(); ++k) {
+      auto& v = out[k].into;
+      const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      for (auto& c2 : v) c2 /= len;
     }
   }
   std::vector<geometry::TangentPlane> tangents;
@@ -129,6 +137,7 @@ void MirrorWalls::images(const double x[3], MirrorSet& set) const {
         for (int r = 0; r < 3; ++r) comp.t[r] = ta.t[r] + ta.R[3 * r] * both.t[0] + ta.R[3 * r + 1] * both.t[1] + ta.R[3 * r + 2] * both.t[2];
         comp.plane = static_cast<int>(m);
         comp.plane2 = static_cast<int>(k);
+        for (int r = 0; r < 3; ++r) comp.into[r] = -(set.planes[m].n[r] + set.planes[k].n[r]) / std::sqrt(2.0);
         out.push_back(comp);
       }
     }
@@ -139,7 +148,7 @@ std::size_t MirrorWalls::reflect_crossings(Particles& P) const {
   std::size_t reflected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : reflected)
   for (std::size_t i = 0; i < n; ++i) {
-    if (P.kind[i] != Kind::Fluid) continue;
+    if (P.kind[i] != Kind::Fluid && P.kind[i] != Kind::Soil) continue;
     double* x[3] = {&P.x[i], &P.y[i], &P.z[i]};
     double* v[3] = {&P.vx[i], &P.vy[i], &P.vz[i]};
     bool crossed = false;

@@ -1,5 +1,5 @@
-// Mirror walls (walls.type "mirror", fluids): ghost particles made afresh at every step by mirroring
-// the fluid across the walls (Libersky, Petschek, Carney, Hipp & Allahdadi 1993, J. Comput. Phys. 109,
+// Mirror walls (walls.type "mirror", fluids and dry soil): ghost particles made afresh at every step by
+// mirroring the material across the walls (Libersky, Petschek, Carney, Hipp & Allahdadi 1993, J. Comput. Phys. 109,
 // 67-75; Randles & Libersky 1996, Comput. Methods Appl. Mech. Engrg. 139, 375-408, Sec. 5). They are
 // not stored as particles: a fluid particle i within the kernel support of a wall sees, besides its
 // neighbours x_j, their images T(x_j) across the wall planes near it (fluid/fluid_mirror_images.cpp).
@@ -39,6 +39,8 @@ struct MirrorImage {
   bool free_slip = false;
   // boundary images: the tangent planes (MirrorSet::planes) mirrored across, -1 for none
   int plane = -1, plane2 = -1;
+  // the unit direction from the fluid into the wall (a corner's: along its diagonal)
+  std::array<double, 3> into{};
 
   std::array<double, 3> apply(const double x[3]) const {
     std::array<double, 3> y{};
@@ -94,7 +96,7 @@ class MirrorWalls {
   // whose surface lies within the kernel support of x, on either side of it (a particle that has
   // crossed a face still sees its image, which pushes it back).
   void images(const double x[3], MirrorSet& out) const;
-  // A fluid particle that has crossed a wall within the last support (its image force vanishes as it
+  // A fluid or soil particle that has crossed a wall within the last support (its image force vanishes as it
   // reaches the surface: the normal offset of its images shrinks with its distance, where a wall particle
   // of the other treatments stays dx/2 behind the surface) is reflected back across it, its normal
   // velocity reversed, as a specular bounce. Returns the particles reflected.

@@ -34,9 +34,10 @@ const bool documented = register_section(
                  "ghost walls (fixed ghost particles, Marrone et al. 2011, fluid, soil and two-phase soil: each wall particle "
                  "takes the fluid's pressure and opposite velocity, or the soil's stress and velocity mirrored across "
                  "the wall (free slip) or copied with the opposite velocity (no slip), at its mirror point, by linear "
-                 "moving least squares), or mirror walls (fluids only, fixed walls: no particles; each fluid particle "
+                 "moving least squares), or mirror walls (fluids and dry soil, fixed walls: no particles; each particle "
                  "near a wall sees its neighbours mirrored across it at every step, with mirrored (free slip) or "
-                 "opposite (no slip) velocity and the hydrostatic pressure step: ghost particles of Randles & "
+                 "opposite (no slip) velocity and the hydrostatic pressure step, the soil's stress mirrored "
+                 "R sigma R^T (free slip) or copied (no slip): ghost particles of Randles & "
                  "Libersky 1996 at container faces and corners, the multiple boundary tangent method of Yildiz et al. "
                  "2009 at walls.boundaries)"),
       choice_doc("slip", {"no_slip", "free_slip"}, "no_slip", "wall condition of every wall (a container may set its own)"),

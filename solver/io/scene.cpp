@@ -497,9 +497,12 @@ void validate_scene(const Scene& s) {
   validate_structures(s);
   validate_two_phase(s);
   validate_overlaps(s);
-  if (s.has_soil() && s.has_walls() && s.walls.type != "dummy" && s.walls.type != "ghost")
-    fail("walls.type", "soil needs dummy or ghost walls (they carry the soil's stress); \"" + s.walls.type +
+  if (s.has_soil() && s.has_walls() && s.walls.type != "dummy" && s.walls.type != "ghost" && s.walls.type != "mirror")
+    fail("walls.type", "soil needs dummy, ghost or mirror walls (they carry the soil's stress); \"" + s.walls.type +
                            "\" walls are for fluids only");
+  if (s.two_phase() && s.walls.type == "mirror")
+    fail("walls.type", "\"mirror\" walls do not take saturated (two-phase) soil yet: its pore water and skeleton "
+                       "would need their images coupled; use \"dummy\" or \"ghost\"");
   if (s.walls.type == "mirror" && !s.walls.blocks.empty())
     fail("walls.blocks", "are not available with walls.type \"mirror\" (mirror walls are fixed walls without particles; "
                          "a block, which may move or hold a structure, is made of particles: use \"dummy\" or \"ghost\")");

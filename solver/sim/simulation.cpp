@@ -49,7 +49,6 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
       dummy_walls_ = std::make_unique<DummyWalls>(scene_, *fluid_);
       dummy_walls_->allocate(P_);
     }
-    if (scene_.walls.type == "mirror") mirror_walls_ = std::make_unique<MirrorWalls>(scene_);
     for (const auto& m : scene_.materials) bounds_.fluid.rho0.push_back(m.density);
     bounds_.fluid.max_speed = fluid_->max_sound_speed();
   }
@@ -63,6 +62,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     for (const auto& m : scene_.soils) bounds_.soil.rho0.push_back(m.density);
     bounds_.soil.max_speed = soil_->max_wave_speed();
   }
+  if (scene_.walls.type == "mirror") mirror_walls_ = std::make_unique<MirrorWalls>(scene_);
   if (P_.count(Kind::RigidStructure) > 0) {
     rigid_ = std::make_unique<RigidMotions>(scene_);
     rigid_->set_velocities(P_, 0.0);
@@ -148,7 +148,8 @@ std::vector<Stage> Simulation::stage_table() {
   // drift
   add(rigid_ != nullptr, {"rigid_motion", Hook::Drift, {"t"}, {"x[rigid]", "v[rigid]"}, {},
                           [this] { if (!loading_now_) rigid_->advance(P_, t_, dt_); }});
-  add(mirror_walls_ != nullptr, {"mirror_wall_crossings", Hook::Drift, {"x[fluid]", "v[fluid]"}, {"x[fluid]", "v[fluid]"}, {},
+  add(mirror_walls_ != nullptr, {"mirror_wall_crossings", Hook::Drift, {"x[fluid]", "v[fluid]", "x[soil]", "v[soil]"},
+                                 {"x[fluid]", "v[fluid]", "x[soil]", "v[soil]"}, {},
                                  [this] { mirror_reflections_ += mirror_walls_->reflect_crossings(P_); }});
   // rates at x^{n+1}, v^{n+1/2}
   add(seepage_ != nullptr, {"seepage_porosity_rate", Hook::Rates, {"x", "v", "porosity"}, {"porosity_rate"}, {},

@@ -1,4 +1,5 @@
 #include "soil/soil_forces.hpp"
+#include "soil/soil_mirror_images.hpp"
 
 #include <Eigen/Dense>
 
@@ -41,6 +42,7 @@ inline bool continuum_pair(Kind ki, Kind kj) {
 }  // namespace
 
 SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
+  if (scene.walls.type == "mirror") mirror_ = std::make_shared<const MirrorWalls>(scene);
   for (const auto& m : scene.soils) {
     wave_speed_.push_back(m.wave_speed());
     if (m.pressure_dependent()) has_pressure_dependent_ = true;
@@ -122,6 +124,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
 #pragma omp parallel
   {
   Neighbors nb;
+  MirrorSet images;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
@@ -151,6 +154,26 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
           for (int b = 0; b < Dim; ++b) B[a][b] += Vj * rji[a] * grad[b];
       }
     }
+    if (mirror_ && ki == Kind::Soil)  // mirror walls: the same sums with the soil's images
+      for_each_soil_image(*mirror_, images, P, cells, i, 0.5 * scene_.dx, [&](const MirrorImage& M, std::uint32_t j, const std::array<double, 3>& r,
+                                                              const std::array<double, 3>&) {
+        const double fw = kernel.gradW_over_r(std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
+        const double grad[3] = {fw * r[0], fw * r[1], fw * r[2]};
+        const auto vj = mirror_velocity(M, P, j);
+        const double dv[3] = {vj[0] - vxi, vj[1] - vyi, Dim == 3 ? vj[2] - vzi : 0.0};
+        // continuity with the mirrored velocity R v_j whatever the slip: the wall is impermeable, and a
+        // no-slip wall's shear has no divergence (the reversed tangential velocity of a sliding front's
+        // images behind it, with none ahead, read as an expansion that tore the toe of a collapse apart)
+        const double vjm[3] = {P.vx[j], P.vy[j], P.vz[j]};
+        const auto vm = M.rotate(vjm);
+        const double cv[3] = {vm[0] - vxi, vm[1] - vyi, Dim == 3 ? vm[2] - vzi : 0.0};
+        drho -= mass[j] * (cv[0] * grad[0] + cv[1] * grad[1] + cv[2] * grad[2]);
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) {
+            L[a][b] += vol[j] * dv[a] * grad[b];
+            if (correct) B[a][b] -= vol[j] * r[a] * grad[b];
+          }
+      });
     if (correct) {
       // L <- L B^-1 on the in-plane block (B is the identity for a full, regular support)
       Eigen::Matrix3d Bm = Eigen::Matrix3d::Identity(), Lm = Eigen::Matrix3d::Zero();
@@ -299,6 +322,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
 #pragma omp parallel
   {
   Neighbors nb;
+  MirrorSet images;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
@@ -361,6 +385,35 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         ay += mj * (Txy * gx + Tyy * gy);
       }
     }
+    if (mirror_ && ki == Kind::Soil)  // mirror walls: the images' stress, artificial stress and viscosity
+      for_each_soil_image(*mirror_, images, P, cells, i, 0.5 * scene_.dx, [&](const MirrorImage& M, std::uint32_t j, const std::array<double, 3>& r,
+                                                              const std::array<double, 3>& step) {
+        const double rr = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+        const double fw = kernel.gradW_over_r(rr);
+        const double grad[3] = {fw * r[0], fw * r[1], fw * r[2]};
+        const double mj = mass[j], rhoj = dens[j];
+        auto Sj = mirror_tensor(M, S[j]);
+        // the hydrostatic step: sigma' = sigma - rho g . (x_j' - x_j) I
+        const double ds = rhoj * (g[0] * step[0] + g[1] * step[1] + g[2] * step[2]) / (rhoj * rhoj);
+        Sj[0] -= ds; Sj[1] -= ds; Sj[2] -= ds;
+        std::array<double, 6> Tm;
+        for (int c = 0; c < 6; ++c) Tm[c] = Si[c] + Sj[c];
+        if (use_as && (tension_i | tension[j])) {
+          const double f = std::pow(kernel.W(rr) / w_dx, n_as);
+          const auto Rj = mirror_tensor(M, R[j]);
+          for (int c = 0; c < 6; ++c) Tm[c] += f * (Ri[c] + Rj[c]);
+        }
+        const auto vj = mirror_velocity(M, P, j);
+        const double u[3] = {vxi - vj[0], vyi - vj[1], Dim == 3 ? vzi - vj[2] : 0.0};
+        const double vr = std::min(u[0] * r[0] + u[1] * r[1] + u[2] * r[2], 0.0);
+        const double d = rr * rr + eta2, hvr = h * vr;
+        const double cij = cw ? 0.5 * (ci + cw[j]) : ci;
+        const double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        Tm[0] -= Pi; Tm[1] -= Pi; Tm[2] -= Pi;
+        ax += mj * (Tm[0] * grad[0] + Tm[3] * grad[1] + Tm[4] * grad[2]);
+        ay += mj * (Tm[3] * grad[0] + Tm[1] * grad[1] + Tm[5] * grad[2]);
+        if constexpr (Dim == 3) az += mj * (Tm[4] * grad[0] + Tm[5] * grad[1] + Tm[2] * grad[2]);
+      });
     P.ax[i] = ax + g[0] + scene_.body_force[0];
     P.ay[i] = ay + g[1] + scene_.body_force[1];
     P.az[i] = az + g[2] + scene_.body_force[2];

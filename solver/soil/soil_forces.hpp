@@ -18,8 +18,10 @@
 // Pressure p = -tr(sigma)/3 is an output of the constitutive model, not an equation of state.
 #pragma once
 #include <array>
+#include <memory>
 #include <vector>
 
+#include "boundary/mirror_wall.hpp"
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "io/scene.hpp"
@@ -80,6 +82,7 @@ class SoilForces {
   std::vector<std::optional<materials::LinearElastic>> hooke_;
   mutable std::vector<std::array<double, 6>> S_, R_;  // xx yy zz xy xz yz
   mutable std::vector<std::uint8_t> tension_;  // R_[i] is not zero
+  std::shared_ptr<const MirrorWalls> mirror_;  // walls.type "mirror" (soil/soil_mirror_images.hpp)
   mutable std::vector<double> mass_, rho_, volume_, ghost_vx_, ghost_vy_, ghost_vz_;  // volume_ = mass_ / rho_
 };
 

@@ -261,7 +261,7 @@ TEST(GhostWall, PoreWaterMirrorsItsPorosity) {
 TEST(GhostWall, SoilSceneRejectsFluidOnlyWalls) {
   for (const char* type : {"morris", "repulsive"}) {
     auto j = saturated_column(type);
-    test::expect_scene_error(j, "walls.type", "soil needs dummy or ghost walls");
+    test::expect_scene_error(j, "walls.type", "soil needs dummy, ghost or mirror walls");
   }
   EXPECT_NO_THROW(parse_scene(saturated_column("dummy"), "ok.json"));
 }

@@ -10,6 +10,7 @@
 #include "boundary/geometry.hpp"
 #include "boundary/mirror_wall.hpp"
 #include "io/scene.hpp"
+#include "soil/soil_mirror_images.hpp"
 
 using namespace geosph;
 using nlohmann::json;
@@ -187,4 +188,44 @@ TEST(MirrorWall, ShapedWaterIsRelaxedAgainstItsSurface) {
   std::vector<BodyFill> lattice;
   build_particles(parse_scene(j, "ok.json"), &lattice);
   EXPECT_EQ(lattice[0].relaxation.iterations, 0);
+}
+
+TEST(MirrorWall, SoilStressAndVelocityOfAnImage) {
+  const Scene s = parse_scene(mirror_tank(json::parse(R"({"type": "mirror", "slip": "free_slip",
+      "containers": [{"min": [0, 0], "max": [1, 1.25], "open": ["top"]}]})")), "ok.json");
+  const MirrorWalls walls(s);
+  MirrorSet set;
+  const double x[3] = {0.03, 0.07, 0};  // near the lower left corner
+  walls.images(x, set);
+  ASSERT_EQ(set.images.size(), 3u);
+  const std::array<double, 6> sigma = {-1.0, -2.0, -0.5, 0.3, 0.0, 0.0};  // xx yy zz xy xz yz
+  for (const auto& T : set.images) {
+    const auto m = mirror_tensor(T, sigma);
+    const bool both = T.R[0] < 0 && T.R[4] < 0;  // the corner's double mirror keeps every sign in 2D
+    EXPECT_DOUBLE_EQ(m[0], -1.0);
+    EXPECT_DOUBLE_EQ(m[1], -2.0);
+    EXPECT_DOUBLE_EQ(m[3], both ? 0.3 : -0.3);  // a single mirror turns the wall's shear
+  }
+  MirrorImage copy = set.images[0];
+  copy.free_slip = false;
+  EXPECT_EQ(mirror_tensor(copy, sigma), sigma);  // no slip: the stress is copied
+}
+
+TEST(MirrorWall, SaturatedSoilIsRejected) {
+  auto j = json::parse(R"({
+    "name": "column", "dimension": 2, "dx": 0.05, "kernel": {"type": "wendland_c2"},
+    "domain": {"min": [-0.3, -0.3], "max": [1.3, 1.3]}, "gravity": [0, -9.81], "time": {"end": 0.01},
+    "materials": {"sand": {"model": "drucker_prager", "density": 2000, "young_modulus": 1e6, "poisson_ratio": 0.3,
+                           "friction_angle": 30, "porosity": 0.4, "hydraulic_conductivity": 1e-3},
+                  "water": {"model": "tait_fluid", "density": 1000, "sound_speed": 20}},
+    "bodies": [{"material": "sand", "shape": "box", "min": [0, 0], "max": [1, 0.5]},
+               {"material": "water", "shape": "box", "min": [0, 0], "max": [1, 0.5]}],
+    "walls": {"type": "mirror", "containers": [{"min": [0, 0], "max": [1, 1], "open": ["top"]}]}
+  })");
+  try {
+    parse_scene(j, "bad.json");
+    FAIL() << "two-phase soil with mirror walls accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("two-phase"), std::string::npos) << e.what();
+  }
 }

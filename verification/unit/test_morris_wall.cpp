@@ -95,7 +95,7 @@ TEST(MorrisWall, FreeSlipAndSoilAreRejected) {
   test::expect_scene_error(j, "walls.containers[0].slip", "no-slip walls");
   j = test::soil_column_scene();
   j["walls"]["type"] = "morris";
-  test::expect_scene_error(j, "walls.type", "soil needs dummy or ghost walls");
+  test::expect_scene_error(j, "walls.type", "soil needs dummy, ghost or mirror walls");
   j = morris_channel();
   j["walls"]["type"] = "image";
   test::expect_scene_error(j, "walls.type", "must be one of {dummy, repulsive, morris, ghost, mirror}");

@@ -173,7 +173,7 @@ TEST(SceneInput, SoilMaterialRanges) {
   expect_error(j, "materials.sand.dilatancy_angle", "must not exceed friction_angle");
   j = soil_scene();
   j["walls"]["type"] = "repulsive";
-  expect_error(j, "walls.type", "soil needs dummy or ghost walls");
+  expect_error(j, "walls.type", "soil needs dummy, ghost or mirror walls");
 }
 
 // Modified Cam Clay: lambda <= kappa, non-positive M, p' <= 0 at start.
