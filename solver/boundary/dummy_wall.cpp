@@ -11,7 +11,7 @@ namespace geosph {
 DummyWalls::DummyWalls(const Scene& scene, const FluidForces& fluid)
     // Morris walls (boundary/morris_wall.hpp) take the dummy pressure, but their velocity per pair
     : scene_(scene), fluid_(fluid), no_slip_(scene.any_no_slip_wall() && scene.walls.type != "morris"),
-      ghost_(scene.walls.type == "ghost") {}
+      ghost_(scene.walls.type == "ghost"), drained_(drained_faces(scene)) {}
 
 void DummyWalls::allocate(Particles& P) const {
   if (!no_slip_) return;
@@ -37,9 +37,11 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
         // water neighbours and the intrinsic density in the hydrostatic term
         const std::int32_t* slip = P.find_int(BodyFields::wall_free_slip);  // per container, if they differ
         double* por = scene_.two_phase() ? P.field(SeepageFields::porosity).data() : nullptr;
+        const std::int32_t* drained = drained_.empty() ? nullptr : P.find_int(DrainedFields::face);
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::size_t w = 0; w < n; ++w) {
-          if (P.kind[w] != Kind::DummyWall || (ghost_ && !unmirrored_[w])) continue;
+          const DrainedFace* face = drained && drained[w] > 0 ? &drained_[static_cast<std::size_t>(drained[w]) - 1] : nullptr;
+          if (P.kind[w] != Kind::DummyWall || (ghost_ && !unmirrored_[w] && !face)) continue;
           double sw = 0, sp = 0, srx = 0, sry = 0, srz = 0, svx = 0, svy = 0, svz = 0, sn = 0;
           double wmax = -1;
           std::uint16_t mat = 0;
@@ -59,6 +61,12 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
           if (sw > 0) {
             // fixed walls: a_w = 0
             P.p[w] = (sp + g[0] * srx + g[1] * sry + g[2] * srz) / sw;
+            if (face) {  // drained: the excess over the face's hydrostatic line p_h, reflected oddly (0 at the face)
+              const double xw[3] = {P.x[w], P.y[w], P.z[w]};
+              const double d = face->depth(xw);
+              const double ph = face->pressure + e.rho0 * d * (face->upper ? g[face->axis] : -g[face->axis]);
+              P.p[w] = 2.0 * ph - P.p[w];
+            }
             P.rho[w] = e.density(P.p[w]);
             if (por) {
               por[w] = sn / sw;
@@ -70,6 +78,16 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
               wvy[w] = 2.0 * P.vy[w] - svy / sw;
               wvz[w] = 2.0 * P.vz[w] - svz / sw;
             }
+          } else if (face) {
+            const double xw[3] = {P.x[w], P.y[w], P.z[w]};
+            const double d = face->depth(xw);
+            P.p[w] = face->pressure + e.rho0 * d * (face->upper ? g[face->axis] : -g[face->axis]);
+            P.rho[w] = e.density(P.p[w]);
+            if (por) {
+              por[w] = scene_.soils.front().porosity;
+              P.rho[w] *= por[w];
+            }
+            P.m[w] = P.rho[w] * volume;
           } else {
             P.p[w] = e.p_bg;
             P.rho[w] = e.rho0;

@@ -7,11 +7,13 @@
 // so the wall carries the hydrostatic pressure right up to its surface (no particle deficiency).
 // Morris walls (walls.type "morris", boundary/morris_wall.hpp) take p and rho from here and no v_w.
 // Ghost walls (walls.type "ghost", boundary/ghost_wall.hpp) fill the same fields from their mirror points.
+// Drained sides (boundary/drained_face.hpp) take the prescribed pore pressure instead of the extrapolated one.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "boundary/drained_face.hpp"
 #include "core/cell_list.hpp"
 #include "core/particles.hpp"
 #include "fluid/fluid_forces.hpp"
@@ -37,6 +39,7 @@ class DummyWalls {
   const Scene& scene_;
   const FluidForces& fluid_;
   bool no_slip_, ghost_;
+  std::vector<DrainedFace> drained_;  // containers' drained sides: their water pressure is prescribed
   mutable std::vector<std::uint8_t> unmirrored_;  // ghost walls: the particles left to the dummy treatment
   mutable PointList mirrors_;  // ghost walls: the fluid near each mirror point
 };

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "boundary/body_fields.hpp"
+#include "boundary/drained_face.hpp"
 #include "boundary/mirror_relaxation.hpp"
 #include "boundary/wall_surface.hpp"
 #include "geometry/lattice_fill.hpp"
@@ -130,7 +131,7 @@ BodyFill add_soil_body(Particles& P, const Scene& s, const BodySpec& b, std::siz
       model.initialise(sigma, b, st, i);
     }, m.model);
   }
-  return {pts.size(), m.density * vol * static_cast<double>(pts.size()), m.density * body_measure(s, b)};
+  return {pts.size(), m.density * vol * static_cast<double>(pts.size()), m.density * body_measure(s, b), {}};
 }
 
 std::uint16_t fluid_material_index(const Scene& s, const BodySpec& b) {
@@ -154,7 +155,7 @@ BodyFill add_fluid_body(Particles& P, const Scene& s, const BodySpec& b) {
     P.vx.back() = b.velocity[0]; P.vy.back() = b.velocity[1]; P.vz.back() = b.velocity[2];
     P.p.back() = eos.pressure(rho);
   }
-  return {pts.size(), mass, eos.rho0 * body_measure(s, b)};
+  return {pts.size(), mass, eos.rho0 * body_measure(s, b), {}};
 }
 
 }  // namespace
@@ -199,7 +200,9 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
   // Morris and ghost walls need each wall particle's place relative to the surface
   const bool surface = s.walls.type == "morris" || s.walls.type == "ghost";
   const double rho0 = s.has_fluid() ? s.materials.front().density : s.soils.front().density;
-  for (const auto& c : s.walls.containers) {
+  const std::vector<DrainedFace> drained = drained_faces(s);
+  for (std::size_t ck = 0; ck < s.walls.containers.size(); ++ck) {
+    const auto& c = s.walls.containers[ck];
     auto is_open = [&](const char* side) { return std::find(c.open.begin(), c.open.end(), side) != c.open.end(); };
     std::array<double, 3> lo = c.lo, hi = c.hi;
     for (int a = 0; a < s.dim; ++a) {
@@ -233,6 +236,9 @@ Particles build_particles(const Scene& s, std::vector<BodyFill>* fills, std::vec
           if (q[a] < c.lo[a] || q[a] > c.hi[a]) axes |= 1 << a;
         P.add_int_field(BodyFields::wall_mirror_axes, BodyFields::owner).back() = axes;
       }
+      if (!drained.empty())
+        if (const std::int32_t f = drained_face_of(s, drained, ck, q))
+          P.add_int_field(DrainedFields::face, DrainedFields::owner).back() = f;
       // the depth behind the nearest point of the container's inner box, and the direction to it (a
       // corner particle's diagonal)
       if (surface) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "boundary/wall_input.hpp"
 
 #include "boundary/morris_wall.hpp"
@@ -66,7 +67,12 @@ const bool documented_containers = register_section(
       {"max", FieldType::Vector, "dimension numbers, > min", "required", "m", "inner upper corner"},
       {"open", FieldType::Texts, "from {left, right, bottom, top, front, back}", "[]", "-",
        "sides without a wall: left/right along x; 2D: bottom/top along y; 3D: front/back along y, bottom/top along z"},
-      choice_doc("slip", {"no_slip", "free_slip"}, "walls.slip", "this container's wall condition")}});
+      choice_doc("slip", {"no_slip", "free_slip"}, "walls.slip", "this container's wall condition"),
+      {"drained", FieldType::Texts, "from {left, right, bottom, top, front, back}, not open", "[]", "-",
+       "saturated soil: sides the pore water drains through at drained_pressure (a filter, a porous stone); the "
+       "skeleton rests on them as on a wall, the water that crosses them leaves the run (boundary/drained_face.hpp)"},
+      number_doc("drained_pressure", Range::between(-1e5, 1e9), "0", "Pa",
+                 "pore pressure at the drained sides (hydrostatic behind them)")}});
 
 const bool documented_blocks = register_section(
     {"walls.blocks", "walls.blocks[k]", "A solid box of wall particles (a clamp, a footing, a piston), optionally moving.",
@@ -98,6 +104,17 @@ WallSpec parse_walls(const JsonFields& w, int dim) {
           c.fail("open", "\"" + side + "\" is a side of a 3D container (along y); a 2D container has left, right, "
                          "bottom and top");
       cs.slip = c.choice("slip", {"no_slip", "free_slip"}, walls.slip);
+      cs.drained = c.texts("drained", kSides);
+      for (const auto& side : cs.drained) {
+        if (dim == 2 && (side == "front" || side == "back"))
+          c.fail("drained", "\"" + side + "\" is a side of a 3D container (along y); a 2D container has left, right, "
+                            "bottom and top");
+        if (std::find(cs.open.begin(), cs.open.end(), side) != cs.open.end())
+          c.fail("drained", "\"" + side + "\" is also open: a drained side is a wall the pore water passes through");
+      }
+      cs.drained_pressure = c.number("drained_pressure", Range::between(-1e5, 1e9), 0.0);
+      if (c.has("drained_pressure") && cs.drained.empty())
+        c.fail("drained_pressure", "applies to drained sides only (set 'drained')");
       c.reject_unknown();
       walls.containers.push_back(cs);
     }

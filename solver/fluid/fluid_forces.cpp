@@ -2,6 +2,7 @@
 
 #include "boundary/body_fields.hpp"
 #include "boundary/dummy_wall.hpp"
+#include "boundary/drained_face.hpp"
 #include "boundary/morris_wall.hpp"
 #include "coupling/seepage_fields.hpp"
 
@@ -157,6 +158,8 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
     vol[i] = P.m[i] / P.rho[i];
   }
   const double* por = Porous ? porosity(P) : nullptr;
+  // drained sides (boundary/drained_face.hpp): the pore water crosses them with its own velocity
+  const std::int32_t* drained = Porous ? P.find_int(DrainedFields::face) : nullptr;
   // pore water: delta-SPH less the linear part of the density field (Antuono et al. 2010), so that a
   // smooth pore-pressure profile is not diffused: plain or hydrostatic delta-SPH drained a consolidating
   // layer through the water's numerical diffusion, delta h c0, which rivals c_v = k M / gamma_w at low k
@@ -214,9 +217,11 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
       const double mj = m[j], rhoj = rho[j];
       const double ux = vxi - vx[j], uy = vyi - vy[j], uz = Dim == 3 ? vzi - vz[j] : 0.0;
       const bool wall = kj == Kind::DummyWall;
+      const bool outlet = Porous && wall && drained && drained[j] > 0;
       const double inv_r2 = 1.0 / (r2 + eta2);
-      // continuity (Monaghan 1992, eq. 4.7); walls enter with their own (prescribed) velocity
-      drho += mj * fw * dot(ux, uy, uz, dx, dy, dz);
+      // continuity (Monaghan 1992, eq. 4.7); walls enter with their own (prescribed) velocity, a drained
+      // side with the water's (no term)
+      drho += outlet ? 0.0 : mj * fw * dot(ux, uy, uz, dx, dy, dz);
       if (diffusion) {
         // delta-SPH between fluid particles (Molteni & Colagrossi 2009, eq. 14); pore water: on the
         // intrinsic density (rho/n), scaled back by n_i
@@ -234,7 +239,7 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
       // (Colagrossi & Landrini 2003, J. Comput. Phys. 191, 448-475, for density jumps)
       double coef = Porous ? ni * mj * (pi + p[j]) / (rhoi * rhoj) : mj * (pi_r2 + pr2[j]);
       // free slip: no viscous interaction with the wall (Adami et al. 2012)
-      const bool viscous = !(wall && (MixedSlip ? slip[j] != 0 : free_slip));
+      const bool viscous = !(wall && (MixedSlip ? slip[j] != 0 : free_slip)) && !outlet;
       double wx, wy, wz;
       if constexpr (Morris) {
         // v_ij = beta (v_i - v_wall), beta = min(beta_max, 1 + d_b / d_i) with d_i the fluid particle's

@@ -500,6 +500,11 @@ void validate_scene(const Scene& s) {
   if (s.has_soil() && s.has_walls() && s.walls.type != "dummy" && s.walls.type != "ghost" && s.walls.type != "mirror")
     fail("walls.type", "soil needs dummy, ghost or mirror walls (they carry the soil's stress); \"" + s.walls.type +
                            "\" walls are for fluids only");
+  for (std::size_t k = 0; k < s.walls.containers.size(); ++k)
+    if (!s.walls.containers[k].drained.empty() && (!s.two_phase() || (s.walls.type != "dummy" && s.walls.type != "ghost")))
+      fail("walls.containers[" + std::to_string(k) + "].drained",
+           "drained sides let the pore water of saturated soil leave: they need a two-phase scene (soil with porosity "
+           "and its pore water) and dummy or ghost walls");
   if (s.two_phase() && s.walls.type == "mirror")
     fail("walls.type", "\"mirror\" walls do not take saturated (two-phase) soil yet: its pore water and skeleton "
                        "would need their images coupled; use \"dummy\" or \"ghost\"");

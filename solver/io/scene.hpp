@@ -73,6 +73,8 @@ struct ContainerSpec {
   std::array<double, 3> lo{}, hi{};   // the inner (fluid-side) faces of the walls
   std::vector<std::string> open;      // sides without a wall: left right bottom top front back
   std::string slip;                   // containers: no_slip | free_slip (default: walls.slip)
+  std::vector<std::string> drained;   // containers: sides the pore water drains through (boundary/drained_face.hpp)
+  double drained_pressure = 0;        // containers: pore pressure at the drained sides [Pa]
   std::array<double, 3> velocity{};   // blocks only: prescribed constant velocity (e.g. a footing pushed down)
   double ramp = 0;                    // blocks only: the velocity is reached over `ramp` seconds (smooth start)
 };

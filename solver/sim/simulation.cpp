@@ -63,6 +63,7 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     bounds_.soil.max_speed = soil_->max_wave_speed();
   }
   if (scene_.walls.type == "mirror") mirror_walls_ = std::make_unique<MirrorWalls>(scene_);
+  drained_faces_ = drained_faces(scene_);
   if (P_.count(Kind::RigidStructure) > 0) {
     rigid_ = std::make_unique<RigidMotions>(scene_);
     rigid_->set_velocities(P_, 0.0);
@@ -109,7 +110,8 @@ std::array<double, 3> Simulation::gravity_at(double t) const {
 // the cells are not rebuilt: queries read the list, and only the domain check runs.
 void Simulation::neighbour_search() {
   const bool reorder = scene_.reorder_every > 0 && step_ % scene_.reorder_every == 0;
-  const bool current = !reorder && cells_.pairs_current(P_);
+  const bool current = !reorder && !rebuild_cells_ && cells_.pairs_current(P_);
+  rebuild_cells_ = false;
   const long outside = current ? cells_.find_outside(P_, scene_.domain)
                                : cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);
   if (outside >= 0) {
@@ -277,6 +279,7 @@ void Simulation::step() {
     }
   }
   run_hook(Hook::Drift);
+  if (!drained_faces_.empty()) drain();
   t_ += dt;
   ++step_;
   neighbour_search();
@@ -287,6 +290,22 @@ void Simulation::step() {
   state_ = check_state(P_, scene_.domain, bounds_, step_, t_);
   if (!loading_now_ && next_construction_time() <= t_ * (1 + 1e-12)) apply_construction();
   choose_time_step();
+}
+
+// The pore water that crossed a drained side has left the layer: its particles are removed, and the
+// neighbours are searched again (the pair list refers to particle indices).
+void Simulation::drain() {
+  const std::vector<char> out = crossed_drained_faces(scene_, drained_faces_, P_);
+  double mass = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (out[i]) { mass += P_.m[i]; ++count; }
+  if (count == 0) return;
+  P_.remove(out);
+  drained_particles_ += count;
+  drained_mass_ += mass;
+  n_fluid_ = P_.count(Kind::Fluid);
+  rebuild_cells_ = true;
 }
 
 double Simulation::next_construction_time() const {
@@ -391,6 +410,7 @@ Simulation::RunState Simulation::run_state() const {
              {"state_summary", {state_.v_max, state_.a_max}}};
   if (soil_) s["soil_max_wave_speed"] = {soil_->max_wave_speed()};
   if (rigid_) s["rigid_motion"] = rigid_->state();
+  if (!drained_faces_.empty()) s["drained_water"] = {static_cast<double>(drained_particles_), drained_mass_};
   return s;
 }
 
@@ -406,6 +426,10 @@ void Simulation::restore_run_state(const RunState& s) {
   state_ = {get("state_summary", 2)[0], get("state_summary", 2)[1]};
   if (soil_) soil_->restore_max_wave_speed(get("soil_max_wave_speed", 1)[0]);
   if (rigid_) rigid_->restore_state(get("rigid_motion", 0));
+  if (!drained_faces_.empty()) {
+    drained_particles_ = static_cast<std::size_t>(get("drained_water", 2)[0]);
+    drained_mass_ = get("drained_water", 2)[1];
+  }
   loading_.ran = scene_.gravity_loading.active;  // the checkpoint holds the settled state
   const double done = t_ * (1 + 1e-12);  // and the construction events up to its time
   for (std::size_t k = 0; k < excavated_.size(); ++k) excavated_[k] = scene_.excavations[k].time <= done;

@@ -13,6 +13,7 @@
 #include <vector>
 #include <memory>
 
+#include "boundary/drained_face.hpp"
 #include "boundary/dummy_wall.hpp"
 #include "boundary/geometry.hpp"
 #include "boundary/mirror_wall.hpp"
@@ -64,6 +65,9 @@ class Simulation {
   std::size_t fluid_count() const { return n_fluid_; }
   // mirror walls: fluid particles reflected back across a wall they crossed, over the run so far
   std::size_t mirror_reflections() const { return mirror_reflections_; }
+  // Pore water that left through drained container sides (boundary/drained_face.hpp): particles, mass [kg(/m)].
+  std::size_t drained_particles() const { return drained_particles_; }
+  double drained_mass() const { return drained_mass_; }
   std::size_t soil_count() const { return n_soil_; }
   std::size_t structure_count() const { return n_structure_; }  // deformable and rigid structure particles
   // particles the step integrates or moves: fluid, soil and structures; walls excluded
@@ -120,7 +124,12 @@ class Simulation {
   std::unique_ptr<DummyWalls> dummy_walls_;
   std::unique_ptr<MirrorWalls> mirror_walls_;  // walls.type "mirror": their crossings (boundary/mirror_wall.hpp)
   std::size_t mirror_reflections_ = 0;
-  std::unique_ptr<SoilForces> soil_;
+  std::vector<DrainedFace> drained_faces_;  // containers' drained sides
+  std::size_t drained_particles_ = 0;
+  double drained_mass_ = 0;
+  bool rebuild_cells_ = false;  // the particle set changed since the last neighbour search
+  // Removes the water particles that crossed a drained side (after the drift).
+  void drain();  std::unique_ptr<SoilForces> soil_;
   std::unique_ptr<SoilWalls> soil_walls_;
   std::unique_ptr<RigidMotions> rigid_;
   std::unique_ptr<SoilStructureContact> contact_;

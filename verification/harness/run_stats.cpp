@@ -64,6 +64,10 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
   rec.wall_s += wall;
   // mirror walls: the fluid particles bounced back across a wall (boundary/mirror_wall.hpp)
   if (s.walls.type == "mirror") rec.extra["mirror_wall_reflections"] = sim.mirror_reflections();
+  if (!drained_faces(s).empty()) {
+    rec.extra["drained_water_particles"] = sim.drained_particles();
+    rec.extra["drained_water_mass"] = sim.drained_mass();
+  }
   rec.particle_steps_per_s = rec.wall_s > 0 ? rec.particles * static_cast<double>(rec.steps) / rec.wall_s : 0;
   return ok;
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "analytical/terzaghi_consolidation.hpp"
+#include "boundary/drained_face.hpp"
 #include "coupling/seepage.hpp"
 #include "harness/case_record.hpp"
 #include "harness/driver_registry.hpp"
@@ -27,11 +28,16 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     if (b.surcharge.pressure > 0) soil = &b;
   if (!soil) throw std::runtime_error("terzaghi_consolidation: the scene's soil body needs a surcharge");
   const double H = soil->hi[1] - soil->lo[1], top = soil->hi[1], g = -scene.gravity[1];
+  // double drainage (the container's bottom drained, boundary/drained_face.hpp): the layer drains to both
+  // faces, each half as single drainage over H/2 (symmetric about mid-depth)
+  bool bottom_drained = false;
+  for (const auto& f : drained_faces(scene)) bottom_drained = bottom_drained || (f.axis == 1 && !f.upper);
+  const double H_dr = bottom_drained ? 0.5 * H : H;
   const double gamma_w = Seepage(scene).unit_weight();  // defines k (standard gravity when the scene has none)
   const auto& el = m.as<materials::LinearElastic>().elastic;
   const double E_oed = el.young * (1 - el.poisson) / ((1 + el.poisson) * (1 - 2 * el.poisson));
   const double K_w = w.density * w.sound_speed * w.sound_speed;  // Tait: dp/drho at rho0 times rho0
-  const reference::TerzaghiSpec ref = reference::terzaghi_spec(H, m.hydraulic_conductivity, gamma_w, E_oed,
+  const reference::TerzaghiSpec ref = reference::terzaghi_spec(H_dr, m.hydraulic_conductivity, gamma_w, E_oed,
                                                                m.porosity, K_w, soil->surcharge.pressure,
                                                                soil->surcharge.ramp);
   const double Bq = ref.B * ref.load, s_inf = ref.load / E_oed * H;
@@ -72,11 +78,11 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   };
 
   std::vector<double> err_all;
-  Series U_sph{"SPH (settlement)", "simulation", "degree_of_consolidation", "T = c_v t / H^2", "U = s / s_inf", {}, {}};
+  Series U_sph{"SPH (settlement)", "simulation", "degree_of_consolidation", "T = c_v t / H_dr^2", "U = s / s_inf", {}, {}};
   Series U_ref{"series solution", "analytical", "degree_of_consolidation", U_sph.xlabel, U_sph.ylabel, {}, {}};
   double next_U = 0, U_err_max = 0;
   std::size_t next_iso = 0;
-  const double t_of_T = H * H / ref.cv;
+  const double t_of_T = H_dr * H_dr / ref.cv;
   const bool ok = run_timed(sim, rec, [&](const Simulation& s) {
     const double t = s.time(), T = t / t_of_T;
     if (t >= next_U) {
@@ -93,7 +99,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       Series sph{std::string("SPH ") + name, "simulation", "isochrones", "excess pore pressure / (B q)", "depth / H", {}, {}};
       Series an{std::string("series ") + name, "analytical", "isochrones", sph.xlabel, sph.ylabel, {}, {}};
       for (int r = 0; r < rows; ++r) {
-        const double z = (r + 0.5) * scene.dx, ur = reference::terzaghi_excess_pressure(ref, z, t);
+        const double z = (r + 0.5) * scene.dx;
+        const double ur = reference::terzaghi_excess_pressure(ref, std::min(z, 2 * H_dr - z), t);
         sph.x.push_back(u[r] / Bq); sph.y.push_back(-z / H);
         an.x.push_back(ur / Bq); an.y.push_back(-z / H);
         err_all.push_back(u[r] - ur);
@@ -114,6 +121,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["pore_pressure_coefficient_B"] = ref.B;
   rec.extra["final_settlement_m"] = s_inf;
   rec.extra["H_over_dx"] = H / scene.dx;
+  rec.extra["drainage_path_m"] = H_dr;
+  rec.extra["drainage"] = bottom_drained ? "double (top: free water surface; bottom: drained side)" : "single (top)";
   add_case_metric(rec, cfg, "isochrone_rel_l2", iso_err, all_isochrones);
   add_case_metric(rec, cfg, "degree_of_consolidation_max_error", U_err_max, all_isochrones);
   rec.snapshot = pressure_snapshot(sim);
@@ -131,6 +140,7 @@ std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std
     CaseConfig cfg = base;
     cfg.scene_json["materials"]["clay"]["hydraulic_conductivity"] = v.at("hydraulic_conductivity");
     cfg.scene_json["time"]["end"] = v.at("t_end");
+    if (v.contains("drained")) cfg.scene_json["walls"]["containers"][0]["drained"] = v.at("drained");
     if (v.contains("levels") && v["levels"].contains(ctx.level)) cfg.level = v["levels"][ctx.level];
     if (cfg.level.contains("dx") && cfg.level["dx"].empty()) continue;  // not run at this level
     std::vector<Record> runs;
