@@ -1,6 +1,8 @@
 // The Poiseuille start-up series (Morris et al. 1997, eq. 21): limits and symmetry.
 #include <gtest/gtest.h>
 
+#include <gsl/gsl_integration.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -68,6 +70,34 @@ TEST(Terzaghi, StepLoadDegreeOfConsolidation) {
   EXPECT_NEAR(terzaghi_load(c, 0.1), 625.0, 1e-9);
   EXPECT_THROW(terzaghi_spec(1.0, -1e-2, 9810.0, 2.5e5, 0.4, 2.5e6, 1250.0, 0.2), std::invalid_argument);
   EXPECT_THROW(terzaghi_excess_pressure(c, 1.5, 0.3), std::invalid_argument);
+}
+
+// The ramped load's modes in closed form against Duhamel's integral of the step response taken by GSL
+// quadrature: u_ramp(z, t) = int_0^min(t, t_r) q'(tau)/q0 u_step(z, t - tau) dtau, q' of the cosine ramp,
+// during the ramp and after it, at the base and mid-depth, for a slow and a fast ramp (T_r = 0.049 and
+// 4.9e-4: the second needs 1e5-1e6 modes during the ramp, where the series converges as 1/M^2).
+TEST(Terzaghi, RampedLoadIsDuhamelsIntegralOfTheStep) {
+  using namespace geosph::reference;
+  for (double tr : {0.2, 0.002}) {
+    const TerzaghiSpec r = terzaghi_spec(1.0, 1e-2, 9810.0, 2.5e5, 0.4, 2.5e6, 1250.0, tr);
+    const TerzaghiSpec st = terzaghi_spec(1.0, 1e-2, 9810.0, 2.5e5, 0.4, 2.5e6, 1250.0, 0.0);
+    for (double t : {0.5 * tr, tr, 3 * tr, 0.6})
+      for (double z : {1.0, 0.5}) {
+        struct P { const TerzaghiSpec* st; double t, z, tr; } p{&st, t, z, tr};
+        gsl_function f{[](double tau, void* v) {
+                         const auto* q = static_cast<P*>(v);
+                         const double rate = 0.5 * M_PI / q->tr * std::sin(M_PI * tau / q->tr);
+                         return q->t - tau <= 0 ? rate * q->st->B * q->st->load
+                                                : rate * terzaghi_excess_pressure(*q->st, q->z, q->t - tau);
+                       },
+                       &p};
+        gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
+        double duhamel = 0, err = 0;
+        gsl_integration_qag(&f, 0.0, std::min(t, tr), 1e-12, 1e-10, 200, GSL_INTEG_GAUSS41, w, &duhamel, &err);
+        gsl_integration_workspace_free(w);
+        EXPECT_NEAR(terzaghi_excess_pressure(r, z, t), duhamel, 1e-6 * 1250.0) << "t_r " << tr << " t " << t << " z " << z;
+      }
+  }
 }
 
 // Sheet-pile seepage (reference/analytical/sheet_pile_seepage): the GSL evaluation of the thin-pile

@@ -131,8 +131,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
 
 }  // namespace
 
-// case.json "variants": the layer's permeability (so c_v) and the run's end; a variant's own "levels"
-// entry, if any, replaces the case's spacings (the slow low-c_v runs at fewer of them).
+// case.json "variants": the layer's permeability (so c_v) and the run's end, optionally the drained
+// sides ("drained") and a scale of every modulus and the load ("stiffness_scale"); a variant's own
+// "levels" entry, if any, replaces the case's spacings (the slow low-c_v runs at fewer of them).
 std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std::string& case_name) {
   const CaseConfig base = load_case(ctx, case_name);
   std::vector<Record> out;
@@ -141,6 +142,20 @@ std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std
     cfg.scene_json["materials"]["clay"]["hydraulic_conductivity"] = v.at("hydraulic_conductivity");
     cfg.scene_json["time"]["end"] = v.at("t_end");
     if (v.contains("drained")) cfg.scene_json["walls"]["containers"][0]["drained"] = v.at("drained");
+    if (v.contains("stiffness_scale")) {
+      // the same layer with the skeleton's and the water's moduli and the load scaled by a: B and the
+      // strains are unchanged, c_v scales with a, the undrained column's period with 1/sqrt(a) (so the
+      // load's ramp does too)
+      const double a = v.at("stiffness_scale").get<double>();
+      auto& js = cfg.scene_json;
+      js["materials"]["clay"]["young_modulus"] = js["materials"]["clay"]["young_modulus"].get<double>() * a;
+      js["materials"]["water"]["sound_speed"] = js["materials"]["water"]["sound_speed"].get<double>() * std::sqrt(a);
+      for (auto& b : js["bodies"])
+        if (b.contains("surcharge")) {
+          b["surcharge"]["pressure"] = b["surcharge"]["pressure"].get<double>() * a;
+          b["surcharge"]["ramp"] = b["surcharge"]["ramp"].get<double>() / std::sqrt(a);
+        }
+    }
     if (v.contains("levels") && v["levels"].contains(ctx.level)) cfg.level = v["levels"][ctx.level];
     if (cfg.level.contains("dx") && cfg.level["dx"].empty()) continue;  // not run at this level
     std::vector<Record> runs;
