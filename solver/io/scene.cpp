@@ -86,7 +86,12 @@ const bool documented_numerics = register_section(
                  "reach of the Verlet pair list beyond the kernel support, rebuilt when a particle has moved "
                  "half of it (0: no list, every query scans the cells)"),
       {"kernel_gradient_correction", FieldType::Boolean, "true, false", "false", "-",
-       "solids: corrected velocity gradient (Bonet & Lok 1999), exact for linear fields at free surfaces"}}});
+       "solids: corrected velocity gradient (Bonet & Lok 1999), exact for linear fields at free surfaces"},
+      {"kernel_gradient_correction_stress", FieldType::Boolean, "true, false (true needs kernel_gradient_correction)",
+       "false", "-",
+       "solids: the stress divergence with the corrected kernel gradient on both sides of each pair, "
+       "(S_i B_i^-T + S_j B_j^-T) . grad W (linear momentum conserved): a free strip carries its waves at the "
+       "plate velocity (case elastic_strip_wave)"}}});
 
 const bool documented_materials = register_section(
     {"materials", "materials.<name>", "A material by name; its \"model\" decides the other fields.",
@@ -158,6 +163,10 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file) {
     s.max_density_variation = n->number("max_density_variation", Range{0, 10, true, false}, 0.5);
     s.pair_list_skin = n->number("pair_list_skin", Range{0, 1, false, false}, 0.1);
     s.kernel_gradient_correction = n->boolean("kernel_gradient_correction", false);
+    s.kernel_gradient_correction_stress = n->boolean("kernel_gradient_correction_stress", false);
+    if (s.kernel_gradient_correction_stress && !s.kernel_gradient_correction)
+      n->fail("kernel_gradient_correction_stress", "needs numerics.kernel_gradient_correction true (the correction "
+                                                   "matrix comes from the velocity-gradient pass)");
     n->reject_unknown();
   }
 

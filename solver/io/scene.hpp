@@ -151,6 +151,7 @@ struct Scene {
   double max_density_variation = 0.5; // |rho/rho0 - 1| beyond this is a blow-up
   double pair_list_skin = 0.1;        // Verlet list reach beyond the support, in supports (0: no list)
   bool kernel_gradient_correction = false;  // soil velocity gradient corrected (Bonet & Lok 1999)
+  bool kernel_gradient_correction_stress = false;  // and the solids' stress divergence (both sides of each pair)
   std::vector<FluidMaterial> materials;   // fluids (Kind::Fluid particles index this list)
   std::vector<SoilMaterial> soils;       // soils (Kind::Soil particles index this list)
   bool has_fluid() const { return !materials.empty(); }

@@ -17,6 +17,11 @@ struct SoilFields {
   static constexpr const char* preconsolidation = "preconsolidation_pressure";   // p_c [Pa]
   static constexpr const char* plastic_volumetric_strain = "plastic_volumetric_strain";  // tr(eps_p), tension positive
   static constexpr const char* wave_speed = "wave_speed";  // local P-wave speed [m/s] (moduli grow with p')
+  // numerics.kernel_gradient_correction_stress: B^-T - I per solid particle, row-major (a = 0..2, b = 0..2),
+  // from the last stress update (zero: no correction, e.g. where B is singular)
+  static constexpr const char* correction[9] = {"kernel_correction_xx", "kernel_correction_xy", "kernel_correction_xz",
+                                                "kernel_correction_yx", "kernel_correction_yy", "kernel_correction_yz",
+                                                "kernel_correction_zx", "kernel_correction_zy", "kernel_correction_zz"};
 };
 
 }  // namespace geosph

@@ -60,6 +60,8 @@ void SoilForces::allocate(Particles& P) const {
     P.add_field(f, SoilFields::owner);
   if (P.dim == 3) { P.add_field(SoilFields::xz, SoilFields::owner); P.add_field(SoilFields::yz, SoilFields::owner); }
   for (const auto& f : state_fields_) P.add_field(f, SoilFields::owner);
+  if (scene_.kernel_gradient_correction_stress)
+    for (const char* f : SoilFields::correction) P.add_field(f, SoilFields::owner);
   if (has_pressure_dependent_) {
     P.add_field(SoilFields::wave_speed, SoilFields::owner);
     update_wave_speeds(P);
@@ -118,6 +120,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   for (auto& st : states) st.dt = dt;
   long bad = -1, unconverged = -1;
   const bool correct = scene_.kernel_gradient_correction;
+  double* bt[9] = {};  // B^-T - I for the stress divergence (numerics.kernel_gradient_correction_stress)
+  if (scene_.kernel_gradient_correction_stress)
+    for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
   const Kind* kind = P.kind.data();
   const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
   const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
@@ -183,6 +188,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       Eigen::Matrix3d Binv;
       double det = 0;
       Bm.computeInverseAndDetWithCheck(Binv, det, invertible, 1e-3);
+      if (bt[0])
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) bt[3 * a + b][i] = invertible ? Binv(b, a) - (a == b ? 1.0 : 0.0) : 0.0;
       if (invertible) {
         const Eigen::Matrix3d Lc = Lm * Binv;
         for (int a = 0; a < Dim; ++a)
@@ -319,6 +327,10 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const auto* S = S_.data();
   const auto* R = R_.data();
   const std::uint8_t* tension = tension_.data();
+  // numerics.kernel_gradient_correction_stress: each side's stress with its own corrected gradient
+  const double* bt[9] = {};
+  if (scene_.kernel_gradient_correction_stress)
+    for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
 #pragma omp parallel
   {
   Neighbors nb;
@@ -373,6 +385,39 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         const double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
         Txx -= Pi; Tyy -= Pi;
         if constexpr (Dim == 3) Tzz -= Pi;
+      }
+      if (bt[0]) {
+        // (S_i B_i^-T + S_j B_j^-T) . grad W: the stresses with the corrected gradients (Bonet & Lok 1999,
+        // eq. 22, on each side; antisymmetric in the pair, so linear momentum is kept); viscosity and
+        // artificial stress with the plain gradient
+        const double g0[3] = {gx, gy, gz};
+        double gi[3], gj[3];
+        for (int a = 0; a < 3; ++a) {
+          gi[a] = g0[a];
+          gj[a] = g0[a];
+          for (int b = 0; b < Dim; ++b) {
+            gi[a] += bt[3 * a + b][i] * g0[b];
+            gj[a] += bt[3 * a + b][j] * g0[b];
+          }
+        }
+        const double Ixx = Si[0], Iyy = Si[1], Izz = Si[2], Ixy = Si[3], Ixz = Si[4], Iyz = Si[5];
+        const double Jxx = Sj[0], Jyy = Sj[1], Jzz = Sj[2], Jxy = Sj[3], Jxz = Sj[4], Jyz = Sj[5];
+        // the rest of T (viscosity, artificial stress)
+        const double rxx = Txx - Ixx - Jxx, ryy = Tyy - Iyy - Jyy, rxy = Txy - Ixy - Jxy;
+        if constexpr (Dim == 3) {
+          const double rzz = Tzz - Izz - Jzz, rxz = Txz - Ixz - Jxz, ryz = Tyz - Iyz - Jyz;
+          ax += mj * (Ixx * gi[0] + Ixy * gi[1] + Ixz * gi[2] + Jxx * gj[0] + Jxy * gj[1] + Jxz * gj[2] +
+                      rxx * gx + rxy * gy + rxz * gz);
+          ay += mj * (Ixy * gi[0] + Iyy * gi[1] + Iyz * gi[2] + Jxy * gj[0] + Jyy * gj[1] + Jyz * gj[2] +
+                      rxy * gx + ryy * gy + ryz * gz);
+          az += mj * (Ixz * gi[0] + Iyz * gi[1] + Izz * gi[2] + Jxz * gj[0] + Jyz * gj[1] + Jzz * gj[2] +
+                      rxz * gx + ryz * gy + rzz * gz);
+        } else {
+          (void)Izz; (void)Jzz; (void)Ixz; (void)Iyz; (void)Jxz; (void)Jyz;
+          ax += mj * (Ixx * gi[0] + Ixy * gi[1] + Jxx * gj[0] + Jxy * gj[1] + rxx * gx + rxy * gy);
+          ay += mj * (Ixy * gi[0] + Iyy * gi[1] + Jxy * gj[0] + Jyy * gj[1] + rxy * gx + ryy * gy);
+        }
+        continue;
       }
       // (T . grad W)_a with T symmetric
       if constexpr (Dim == 3) {

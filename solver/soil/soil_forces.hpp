@@ -9,6 +9,8 @@
 //                      (soil/modified_cam_clay.hpp) return mapping
 //   momentum           dv_i/dt = sum_j m_j (S_i + S_j + (R_i + R_j) f_ij^n - Pi_ij I) . grad_i W_ij + g,
 //                      S = sigma / rho^2                                           (Bui 2008, eq. 29)
+//                      optionally with S_i B_i^-T grad W + S_j B_j^-T grad W for the stresses, the
+//                      corrected gradient on each side (numerics.kernel_gradient_correction_stress)
 //   artificial viscosity Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
 //                                                                                  (Monaghan 1992, eq. 4.2)
 //                      c_ij = (c_i + c_j)/2, the local P-wave speeds (constant for Drucker-Prager;
