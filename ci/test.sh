@@ -19,7 +19,7 @@ BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
 bash "$ROOT/ci/build.sh"
 # The tests run side by side, one per core, each on one OpenMP thread (a test that checks thread-count
 # independence sets its own). Two processes each spinning two OpenMP threads on two cores wait at every
-# barrier (hydrostatic_long_time: 116 s alone, 505 s so); one thread per test: 10.8 min for the gate on
+# barrier (hydrostatic_long_time: 116 s alone, 505 s so); one thread per test: 12.3 min for the gate on
 # 2 cores, against 17.2 min for the tests one after another on two threads each.
 OMP_NUM_THREADS=1 ctest --test-dir "$BUILD_DIR" -LE 'convergence|open|soak|walls' --output-on-failure \
   -j "$(nproc)"
