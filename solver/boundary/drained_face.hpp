@@ -27,6 +27,10 @@ struct DrainedFace {
   double pressure = 0;     // p_d [Pa] at the face
   // depth of x behind the face (> 0 beyond it, on the wall's side)
   double depth(const double x[3]) const { return upper ? x[axis] - plane : plane - x[axis]; }
+  // The face's hydrostatic line at x: p_d + rho g . (x - x_f), x_f the foot of x on the face.
+  double hydrostatic_pressure(const double x[3], double rho, const std::array<double, 3>& g) const {
+    return pressure + rho * depth(x) * (upper ? g[axis] : -g[axis]);
+  }
   // x lies within the face's tangential extent (its own axis not checked)
   bool spans(const double x[3], int dim) const {
     for (int a = 0; a < dim; ++a)

@@ -63,9 +63,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
             P.p[w] = (sp + g[0] * srx + g[1] * sry + g[2] * srz) / sw;
             if (face) {  // drained: the excess over the face's hydrostatic line p_h, reflected oddly (0 at the face)
               const double xw[3] = {P.x[w], P.y[w], P.z[w]};
-              const double d = face->depth(xw);
-              const double ph = face->pressure + e.rho0 * d * (face->upper ? g[face->axis] : -g[face->axis]);
-              P.p[w] = 2.0 * ph - P.p[w];
+              P.p[w] = 2.0 * face->hydrostatic_pressure(xw, e.rho0, g) - P.p[w];
             }
             P.rho[w] = e.density(P.p[w]);
             if (por) {
@@ -80,8 +78,7 @@ void DummyWalls::update(Particles& P, const CellList& cells, const std::array<do
             }
           } else if (face) {
             const double xw[3] = {P.x[w], P.y[w], P.z[w]};
-            const double d = face->depth(xw);
-            P.p[w] = face->pressure + e.rho0 * d * (face->upper ? g[face->axis] : -g[face->axis]);
+            P.p[w] = face->hydrostatic_pressure(xw, e.rho0, g);
             P.rho[w] = e.density(P.p[w]);
             if (por) {
               por[w] = scene_.soils.front().porosity;

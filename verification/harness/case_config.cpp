@@ -59,6 +59,12 @@ double CaseConfig::level_number(const std::string& key) const {
   return level[key].get<double>();
 }
 
+bool CaseConfig::use_variant_level(const nlohmann::json& variant, const std::string& level_name) {
+  if (variant.is_object() && variant.contains("levels") && variant["levels"].contains(level_name))
+    level = variant["levels"][level_name];
+  return !(level.contains("dx") && level["dx"].is_array() && level["dx"].empty());
+}
+
 std::vector<double> CaseConfig::level_numbers(const std::string& key) const {
   if (level.contains(key) && level[key].is_array()) {
     std::vector<double> v;

@@ -40,6 +40,9 @@ struct CaseConfig {
   double level_number(const std::string& key) const;
   // A number or a list of numbers (several resolutions, coarse to fine).
   std::vector<double> level_numbers(const std::string& key) const;
+  // A variant's own "levels" entry for `level`, if it has one, replaces the case's (a slow variant at
+  // fewer spacings); false when that entry lists no spacing (the variant does not run at this level).
+  bool use_variant_level(const nlohmann::json& variant, const std::string& level);
   // The case's scene with its particle spacing set to dx.
   Scene scene(double dx) const;
   std::filesystem::path reference_file(const CaseContext& ctx, const std::string& relative) const;

@@ -84,10 +84,13 @@ std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& 
 std::vector<Record> run_each_variant(
     const CaseContext& ctx, const std::string& name,
     const std::function<Record(const CaseConfig&, const CaseContext&, const std::string&, double)>& run_variant) {
-  const CaseConfig cfg = load_case(ctx, name);
+  const CaseConfig base = load_case(ctx, name);
   std::vector<Record> out;
-  for (const auto& v : cfg.spec.at("variants").items())
+  for (const auto& v : base.spec.at("variants").items()) {
+    CaseConfig cfg = base;
+    if (!cfg.use_variant_level(v.value(), ctx.level)) continue;
     for (double dx : cfg.level_numbers("dx")) out.push_back(run_variant(cfg, ctx, v.key(), dx));
+  }
   return out;
 }
 

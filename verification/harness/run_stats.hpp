@@ -19,8 +19,8 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
 std::vector<Record> run_each_spacing(const CaseContext& ctx, const std::string& name,
                                      const std::function<Record(const CaseConfig&, const CaseContext&, double)>& run_at);
 
-// Runs `run_variant` for each entry of case.json's "variants" (in file order) at each spacing of the
-// requested level (coarse to fine).
+// Runs `run_variant` for each entry of case.json's "variants" (in key order) at each spacing of the
+// requested level (coarse to fine), or of the variant's own "levels" entry for it (CaseConfig::use_variant_level).
 std::vector<Record> run_each_variant(
     const CaseContext& ctx, const std::string& name,
     const std::function<Record(const CaseConfig&, const CaseContext&, const std::string&, double)>& run_variant);

@@ -62,6 +62,7 @@ TEST(DrainedFace, FaceParticlesAreDrainedButNotTheCorners) {
   EXPECT_EQ(drained_face_of(s, faces, 0, side), 0);
   // hydrostatic behind the face: depth 0.025 m below it
   EXPECT_NEAR(faces[0].depth(below), 0.025, 1e-15);
+  EXPECT_NEAR(faces[0].hydrostatic_pressure(below, 1000.0, {0, -9.81, 0}), 1000.0 * 9.81 * 0.025, 1e-9);
 
   Particles P;
   P.add(0.5, -0.001, 0, 1, 1000, Kind::Fluid, 0);   // crossed

@@ -105,14 +105,7 @@ Record run_variant(const CaseConfig& base, const CaseContext& ctx, const std::st
 // Each variant at the level's spacings, or at its own where its "levels" entry names this level (the
 // wide strip's finest spacing at the full level only).
 std::vector<Record> run_elastic_strip_wave(const CaseContext& ctx, const std::string& case_name) {
-  const CaseConfig base = load_case(ctx, case_name);
-  std::vector<Record> out;
-  for (const auto& [name, v] : base.spec.at("variants").items()) {
-    CaseConfig cfg = base;
-    if (v.contains("levels") && v["levels"].contains(ctx.level)) cfg.level = v["levels"][ctx.level];
-    for (double dx : cfg.level_numbers("dx")) out.push_back(run_variant(cfg, ctx, name, dx));
-  }
-  return out;
+  return run_each_variant(ctx, case_name, run_variant);
 }
 
 GEOSPH_CASE_DRIVER(elastic_strip_wave, run_elastic_strip_wave);

@@ -156,8 +156,7 @@ std::vector<Record> run_terzaghi_consolidation(const CaseContext& ctx, const std
           b["surcharge"]["ramp"] = b["surcharge"]["ramp"].get<double>() / std::sqrt(a);
         }
     }
-    if (v.contains("levels") && v["levels"].contains(ctx.level)) cfg.level = v["levels"][ctx.level];
-    if (cfg.level.contains("dx") && cfg.level["dx"].empty()) continue;  // not run at this level
+    if (!cfg.use_variant_level(v, ctx.level)) continue;
     std::vector<Record> runs;
     for (double dx : cfg.level_numbers("dx")) {
       runs.push_back(run_at(cfg, ctx, dx));
