@@ -67,7 +67,11 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
     if (best < 0) continue;
     const auto j = static_cast<std::size_t>(best);
     const double nrm[3] = {nx[j], ny[j], nz[j]};
-    const double gap = (P.x[i] - P.x[j]) * nrm[0] + (P.y[i] - P.y[j]) * nrm[1] + (P.z[i] - P.z[j]) * nrm[2] - dx0;
+    const double d[3] = {P.x[i] - P.x[j], P.y[i] - P.y[j], P.z[i] - P.z[j]};
+    // a penetration is at most the centres' overlap dx - |d|: a soil particle one spacing from a convex
+    // corner particle (diagonal normal) touches it, and is not pushed off the corner
+    const double gap = std::max(d[0] * nrm[0] + d[1] * nrm[1] + d[2] * nrm[2] - dx0,
+                                std::min(0.0, std::sqrt(best_r2) - dx0));
     if (gap > 0.5 * dx0) continue;
     const bool rigid = !free_structure(j);  // prescribed motion (its velocity) or clamped (held at rest)
     double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
