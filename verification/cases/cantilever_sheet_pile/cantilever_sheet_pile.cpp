@@ -12,9 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "boundary/body_fields.hpp"
 #include "coupling/soil_structure_contact.hpp"
@@ -60,28 +58,6 @@ Scene build_scene(const CaseConfig& cfg, const Layout& g, double dx) {
                          {"structure", true}, {"interface_friction_angle", cfg.spec.at("interface_friction_angle")}});
   j["walls"]["containers"] = {{{"min", {x0, 0.0}}, {"max", {x1, g.y_top() + 1.0}}, {"open", {"top"}}}};
   return parse_scene(j, (cfg.dir / "scene.json").string());
-}
-
-// The free-earth reference profile: depth [m], net pressure [kPa], shear [kN/m], moment [kN m/m].
-struct Profile {
-  std::vector<double> depth, pressure, moment;
-};
-Profile read_reference(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open the free-earth reference profile");
-  Profile p;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("depth", 0) == 0) continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream s(line);
-    double d, q, v, m;
-    if (!(s >> d >> q >> v >> m)) throw InputError(file.string() + ": malformed row '" + line + "'");
-    p.depth.push_back(d);
-    p.pressure.push_back(q);
-    p.moment.push_back(m);
-  }
-  return p;
 }
 
 // The pile's particles by row (initial lattice row from the toe) and their ids.
@@ -134,9 +110,14 @@ PileState pile_state(const Particles& P, const PileRows& rows, double I) {
 // expected: "stands" or "fails" (the outcome is scored), or "limit" (the embedment of the free-earth
 // method: the bending moment is scored, since there the pile carries the limit pressures whether or not
 // it comes to rest)
-Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& variant, double ratio,
-              const std::string& expected, double dx) {
+Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& variant, double dx) {
   const nlohmann::json& sp = cfg.spec;
+  const nlohmann::json& v = sp.at("variants").at(variant);
+  const double ratio = v.at("embedment_ratio").get<double>();
+  const std::string expected = v.at("expected").get<std::string>();
+  if (expected != "stands" && expected != "fails" && expected != "limit")
+    throw InputError((cfg.dir / "case.json").string() + ": field 'variants." + variant +
+                     ".expected': must be \"stands\", \"fails\" or \"limit\"");
   const double D_free = sp.at("free_earth_embedment").get<double>();
   Layout g{sp.at("retained_height"), ratio * D_free, sp.at("sand_below_toe"), sp.at("retained_width"),
            sp.at("excavated_width"), sp.at("pile_thickness").get<double>(), sp.at("pile_bending_stiffness")};
@@ -211,7 +192,10 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
     add_case_metric(rec, cfg, "limit_state_outcome_error", stands == (expected == "stands") ? 0.0 : 1.0, ok);
   if (expected != "fails") {
     // moment profiles (depth from the retained surface), from the stress and from the contact forces
-    const Profile ref = read_reference(cfg.reference_file(ctx, sp.at("reference_file")));
+    const Csv ref = read_csv(cfg.reference_file(ctx, sp.at("reference_file")).string());
+    const auto& ref_depth = ref.column("depth_m");
+    const auto& ref_pressure = ref.column("net_pressure_kPa");
+    const auto& ref_moment = ref.column("moment_kNm_per_m");
     Series m_stress{"SPH, from the pile's stress (mean over the window)", "simulation", "moment", "bending moment [kN m/m]", "depth [m]", {}, {}};
     Series m_contact{"SPH, from the contact forces above", "simulation", "moment", m_stress.xlabel, m_stress.ylabel, {}, {}};
     Series p_net{"SPH net contact pressure", "simulation", "pressure", "net pressure [kPa]", "depth [m]", {}, {}};
@@ -236,12 +220,12 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
     Series m_ref{"free-earth method (Das, net pressure)", "analytical", "moment", m_stress.xlabel, m_stress.ylabel, {}, {}};
     Series p_ref{"free-earth method (Das, net pressure)", "analytical", "pressure", p_net.xlabel, p_net.ylabel, {}, {}};
     double M_ref = 0, z_ref = 0;
-    for (std::size_t k = 0; k < ref.depth.size(); ++k) {
-      m_ref.x.push_back(ref.moment[k]);
-      m_ref.y.push_back(-ref.depth[k]);
-      p_ref.x.push_back(ref.pressure[k]);
-      p_ref.y.push_back(-ref.depth[k]);
-      if (ref.moment[k] > M_ref) { M_ref = ref.moment[k]; z_ref = ref.depth[k]; }
+    for (std::size_t k = 0; k < ref_depth.size(); ++k) {
+      m_ref.x.push_back(ref_moment[k]);
+      m_ref.y.push_back(-ref_depth[k]);
+      p_ref.x.push_back(ref_pressure[k]);
+      p_ref.y.push_back(-ref_depth[k]);
+      if (ref_moment[k] > M_ref) { M_ref = ref_moment[k]; z_ref = ref_depth[k]; }
     }
     M_ref *= 1e3;
     for (auto* s : {&m_stress, &m_contact, &m_ref, &p_net, &p_ref}) rec.series.push_back(*s);
@@ -263,20 +247,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
 
 }  // namespace
 
+// Each embedment of case.json's "variants" at each spacing of the level.
 std::vector<Record> run_cantilever_sheet_pile(const CaseContext& ctx, const std::string& case_name) {
-  const CaseConfig base = load_case(ctx, case_name);
-  std::vector<Record> out;
-  for (const auto& [name, v] : base.spec.at("variants").items()) {
-    CaseConfig cfg = base;
-    if (!cfg.use_variant_level(v, ctx.level)) continue;
-    const std::string expected = v.at("expected").get<std::string>();
-    if (expected != "stands" && expected != "fails" && expected != "limit")
-      throw InputError((cfg.dir / "case.json").string() + ": field 'variants." + name +
-                       ".expected': must be \"stands\", \"fails\" or \"limit\"");
-    for (double dx : cfg.level_numbers("dx"))
-      out.push_back(run_at(cfg, ctx, name, v.at("embedment_ratio").get<double>(), expected, dx));
-  }
-  return out;
+  return run_each_variant(ctx, case_name, run_at);
 }
 
 GEOSPH_CASE_DRIVER(cantilever_sheet_pile, run_cantilever_sheet_pile);
