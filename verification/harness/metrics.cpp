@@ -70,6 +70,11 @@ std::string Csv::comment(const std::string& key) const {
   return "";
 }
 
+double Csv::comment_number(const std::string& key) const {
+  const std::string v = comment(key);
+  return v.empty() ? NAN : std::stod(v);
+}
+
 std::vector<std::vector<std::string>> read_csv_rows(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open reference data");

@@ -30,6 +30,7 @@ struct Csv {
   std::vector<std::vector<double>> data;  // data[column][row]
   const std::vector<double>& column(const std::string& name) const;
   std::string comment(const std::string& key) const;  // value of a '# key: value' line
+  double comment_number(const std::string& key) const;  // its leading number; NaN when absent
   std::string file;
 };
 Csv read_csv(const std::string& path);

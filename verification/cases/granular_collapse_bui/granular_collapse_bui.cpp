@@ -51,11 +51,6 @@ double failure_angle_deg(const Particles& P, const std::vector<double>& x0, cons
   return std::atan(std::abs(c1)) * 180.0 / std::numbers::pi;
 }
 
-double header_number(const Csv& csv, const std::string& key) {
-  const std::string v = csv.comment(key);
-  return v.empty() ? NAN : std::stod(v);
-}
-
 }  // namespace
 
 namespace {
@@ -99,7 +94,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   const Csv exp_line = read_csv(cfg.reference_file(ctx, "experimental/granular_collapse_bui_2008_failure_line.csv").string());
   rec.series.push_back({"Bui et al. 2008 failure line (experiment)", "experiment", "failure_line", "x [m]", "y [m]",
                         exp_line.column("x"), exp_line.column("y")});
-  rec.extra["failure_angle_deg_reference"] = header_number(exp, "failure_angle_deg");
+  rec.extra["failure_angle_deg_reference"] = exp.comment_number("failure_angle_deg");
 
   const double sph_runout = ok ? runout_front(P, floor_y, dx) - col.lo[0] : NAN;
   double sph_height = 0;
@@ -124,7 +119,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       {"failure_angle_rel_error", "failure_angle_deg", angle}};
   for (const auto& [metric, key, value] : scalars) {
     if (!cfg.tolerances.count(metric)) continue;
-    const double ref = header_number(exp, key);
+    const double ref = exp.comment_number(key);
     rec.extra[key + std::string("_reference")] = ref;
     add_case_metric(rec, cfg, metric, std::abs(value - ref) / ref, ok);
   }
@@ -141,9 +136,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       hd.push_back(dem.column("y")[k]);
       hs.push_back(xq > pr.x.back() + 0.5 * dx ? 0.0 : interpolate(pr.x, pr.h, xq));
     }
-    const double dem_runout = header_number(dem, "runout_m");
+    const double dem_runout = dem.comment_number("runout_m");
     rec.extra["dem_runout_m"] = dem_runout;
-    rec.extra["dem_final_height_m"] = header_number(dem, "final_height_m");
+    rec.extra["dem_final_height_m"] = dem.comment_number("final_height_m");
     if (ok) {
       rec.extra["profile_rel_l2_vs_dem"] = relative_l2(hs, hd);
       rec.extra["runout_rel_diff_vs_dem"] = (sph_runout - dem_runout) / dem_runout;
