@@ -175,13 +175,23 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
           std::uint16_t mat = 0;
           bool covered = false;  // the centre lies inside a structure particle's cell: the structure is there
           bool in_support = false;  // another kind's particle within the support (and so this wall in its)
+          // lattice neighbours ((1.01 dx)^2): a soil particle among them, and the offsets to structure ones
+          const double adjacent2 = 1.0201 * scene_.dx * scene_.dx;
+          bool soil_adjacent = false;
+          int n_adjacent = 0;
+          double adjacent[6][3];
           cells.for_each_neighbor(P, w, [&](std::uint32_t k, double dx, double dy, double dz, double r2) {
             in_support = in_support || P.kind[k] != Kind::DummyWall;
             if (is_structure(P.kind[k])) {
               covered = covered || std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) < 0.5 * scene_.dx;
+              if (r2 <= adjacent2 && n_adjacent < 6) {
+                adjacent[n_adjacent][0] = dx; adjacent[n_adjacent][1] = dy; adjacent[n_adjacent][2] = dz;
+                ++n_adjacent;
+              }
               return;
             }
             if (P.kind[k] != Kind::Soil) return;
+            soil_adjacent = soil_adjacent || r2 <= adjacent2;
             const double W = kernel.W(std::sqrt(r2));
             sw += W;
             for (int c = 0; c < ncomp; ++c) ss[c] += s[c][k] * W;
@@ -192,6 +202,15 @@ void SoilWalls::update(Particles& P, const CellList& cells, const std::array<dou
             if (W > wmax) { wmax = W; mat = P.material[k]; }
           });
           if (!in_support) { far_wall(); continue; }  // a listed candidate, not (yet) within the support
+          // a wall particle in a structure's shadow (a structure particle adjacent on the soil's side, i.e.
+          // towards the kernel-weighted mean of the soil neighbours, and no soil particle adjacent: the
+          // floor under a retaining wall that stands on it) is the structure's support, not the soil's:
+          // left in the soil's sums it carries the soil's extrapolated stress beneath the structure and
+          // props the soil at the structure's foot (a retaining wall standing on the floor lost a quarter
+          // of its active thrust). A structure on the far side (a wall reaching into the floor, seen from
+          // the floor beside it) leaves it the soil's.
+          for (int a = 0; a < n_adjacent && !soil_adjacent && !covered; ++a)
+            covered = adjacent[a][0] * sd[0] + adjacent[a][1] * sd[1] + adjacent[a][2] * sd[2] > 0;
           const double rho0 = scene_.soils[mat].density;
           wrho[w] = rho0;
           wm[w] = covered ? 0.0 : rho0 * volume;  // a covered ghost leaves the soil's sums

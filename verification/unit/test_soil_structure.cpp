@@ -176,3 +176,36 @@ TEST(SoilWalls, GhostsCoveredByAStructureLeaveTheSoilSums) {
   EXPECT_GT(under_soil, 0);
   EXPECT_GT(beside, 0);
 }
+
+// A structure standing on a dummy floor (a retaining wall on the ground): the floor particles adjacent to
+// the structure and to no soil particle are its support, not an image of the soil, and leave the soil's
+// sums; the floor under the soil, up to the wall's face, keeps its ghost mass (boundary/soil_wall.hpp).
+TEST(SoilWalls, GhostsUnderAStructureStandingOnTheFloorLeaveTheSoilSums) {
+  json j = test::soil_structure_scene();
+  j["domain"] = {{"min", {-0.7, -0.5}}, {"max", {2.5, 1.7}}};
+  j["time"]["end"] = 1e-4;
+  j["bodies"][1]["min"] = {-0.2, 0.0};
+  j["bodies"][1]["motion"]["velocity"] = {0, 0};
+  j["walls"] = json::parse(R"({"type": "dummy", "slip": "no_slip",
+                              "containers": [{"min": [-0.4, 0], "max": [2.0, 1.3], "open": ["left", "top"]}]})");
+  const Scene scene = parse_scene(j, "standing.json");
+  Simulation sim(scene);
+  sim.run();
+  const Particles& P = sim.particles();
+  const auto& m = P.field(SoilWallFields::m);
+  const double dx = 0.05;
+  int under_wall = 0, under_soil = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::DummyWall || std::abs(P.y[i] + 0.5 * dx) > 1e-9) continue;  // the floor's top row
+    // under the wall, within the support of the soil's corner particle (dx/2, dx/2)
+    if (P.x[i] > -0.2 && P.x[i] < 0 && std::hypot(P.x[i] - 0.5 * dx, P.y[i] - 0.5 * dx) < scene.support()) {
+      EXPECT_EQ(m[i], 0.0) << "floor ghost at (" << P.x[i] << ", " << P.y[i] << ") under the wall";
+      ++under_wall;
+    } else if (P.x[i] > 0 && P.x[i] < 2.0) {
+      EXPECT_NEAR(m[i], 1700 * dx * dx, 1e-9) << "floor ghost at (" << P.x[i] << ", " << P.y[i] << ") under the soil";
+      ++under_soil;
+    }
+  }
+  EXPECT_GE(under_wall, 2);
+  EXPECT_GT(under_soil, 0);
+}
