@@ -8,6 +8,9 @@
 #                                           -> reference/dem/collapse_a1.csv, collapse_a2.csv
 #   3. unless DEM_SENSITIVITY=0: sensitivity pair with mu = 0.4, mu_r = 0.1
 #      -> reference/dem/calibration_repose_mu0.4_mur0.1.csv, collapse_a0.5_mu0.4_mur0.1.csv
+#   4. unless DEM_WALL=0: smooth retaining wall translated away from (active, 10 mm) and into
+#      (passive, 30 mm) a 0.3 m x 0.1 m backfill at 10 mm/s
+#      -> reference/dem/retaining_wall_{active,passive}.csv and ..._slip.csv (~10 min each)
 # Not part of the default tests (ci/test.sh); the SPH verification cases only
 # read the committed CSVs.  Takes a few minutes on 2 cores (serial LIGGGHTS).
 # Extra LIGGGHTS variable overrides can be passed via DEM_VARS, e.g.
@@ -84,5 +87,18 @@ if [ "${DEM_SENSITIVITY:-1}" = "1" ]; then
     --initial "$WORK/collapse_a0.5_mu0.4_mur0.1_initial.dump" --log "$WORK/collapse_a0.5_mu0.4_mur0.1.log" \
     --input "$DEM/collapse_2d.in" --command "$CMDLINE" --date "$DATE" --calibration-note "$SENS_NOTE" \
     -o "$DEM/collapse_a0.5_mu0.4_mur0.1.csv"
+fi
+# Retaining wall (skip with DEM_WALL=0): calibrated micro-parameters again.
+if [ "${DEM_WALL:-1}" = "1" ]; then
+  MU=0.15
+  MUR=0.02
+  for spec in "active -0.01 0.01" "passive 0.01 0.03"; do
+    set -- $spec
+    mode="$1"; vw="$2"; dmax="$3"
+    run "wall_$mode" "$DEM/retaining_wall_2d.in" -var vw "$vw" -var dmax "$dmax"
+    "$PY" "$DEM/postprocess.py" wall "$WORK/wall_${mode}_final.dump" --initial "$WORK/wall_${mode}_initial.dump" \
+      --force "$WORK/wall_${mode}_force.txt" --log "$WORK/wall_$mode.log" --input "$DEM/retaining_wall_2d.in" \
+      --command "$CMDLINE" --date "$DATE" --calibration-note "$CAL_NOTE" -o "$DEM/retaining_wall_$mode.csv"
+  done
 fi
 echo "DEM references written to $DEM" >&2

@@ -6,6 +6,10 @@ Sub-commands
             collapse (collapse_2d.in) -> CSV with a provenance header
   repose    angle of repose of the ledge test (calibration.in): least-squares
             line fit to the free surface of the wedge left on the ledge
+  wall      retaining wall translated into or away from a backfill
+            (retaining_wall_2d.in): earth-pressure coefficient against wall
+            displacement, and the slip line of the failure wedge from the
+            grains' displacements -> two CSVs with a provenance header
 
 Reads text dumps written by `dump custom` / `write_dump custom` with at least
 the columns x y radius (id, type, z optional).  If a file has several
@@ -82,12 +86,16 @@ def read_log(path):
                 tok = line.split()[1:]
                 info["params"] = dict(zip(tok[0::2], tok[1::2]))
             elif line.startswith("DEM_INITIAL_PARTICLES"):
-                info["n_initial"] = int(line.split()[1])
+                t = line.split()
+                info["n_initial"] = int(t[1])
+                if len(t) >= 4 and t[2] == "MASS":
+                    info["mass_kg"] = float(t[3])
             elif line.startswith("DEM_FINAL_PARTICLES"):
                 t = line.split()
                 info["n_final"] = int(t[1])
-                info["t_release"] = float(t[3])
-                info["vrms_final"] = float(t[5])
+                if len(t) >= 6:
+                    info["t_release"] = float(t[3])
+                    info["vrms_final"] = float(t[5])
             elif line.startswith("Loop time of"):
                 m = re.match(r"Loop time of ([0-9.eE+-]+)", line)
                 if m:
@@ -283,11 +291,146 @@ def cmd_repose(args):
     return res
 
 
+def read_ave_time(path):
+    """Rows (step, values...) of a `fix ave/time` file."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([float(v) for v in line.split()])
+    if not rows:
+        raise ValueError("%s: no data rows" % path)
+    return np.array(rows)
+
+
+def analyse_wall(ini, fin, Lb, H0, thick, mass, dmax, g=9.81, rows=10):
+    """Earth-pressure normalisation and slip line of a translated wall.
+
+    gamma H = M g / (Lb t) is the weight per unit floor area; H_eff is the mean
+    height of the surface profile before the wall moves, so that
+    K = F / (0.5 gamma H_eff^2 t) = 2 F Lb / (M g H_eff).
+    Slip line: grains are matched by id; in each of `rows` horizontal strips
+    (0.1 H_eff high) the slip point is where the grains' horizontal
+    displacement, towards the wall side of the strip, first falls below half
+    the wall's travel (a running median over x-bins one grain wide).  The
+    wedge angle is the least-squares slope of height against slip-point x
+    over the strips 0.15 H_eff < y < 0.85 H_eff (the top strip is disturbed
+    by the settling surface, the bottom one by the wall-floor corner).
+    """
+    dmean = float(np.mean(2 * ini["radius"]))
+    xb, hb = surface_profile(ini["x"], ini["y"], ini["radius"], dmean)
+    keep = ~np.isnan(hb) & (xb > 2 * dmean) & (xb < Lb - 2 * dmean)
+    H_eff = float(np.mean(hb[keep]))
+    order_i = np.argsort(ini["id"])
+    order_f = np.argsort(fin["id"])
+    ids_i = ini["id"][order_i]
+    ids_f = fin["id"][order_f]
+    common, ii, jf = np.intersect1d(ids_i, ids_f, return_indices=True)
+    x0 = ini["x"][order_i][ii]
+    y0 = ini["y"][order_i][ii]
+    ux = fin["x"][order_f][jf] - x0
+    half = 0.5 * abs(dmax)
+    sign = np.sign(dmax)
+    slip = []
+    for k in range(rows):
+        ylo, yhi = k * H_eff / rows, (k + 1) * H_eff / rows
+        sel = (y0 >= ylo) & (y0 < yhi)
+        if sel.sum() < 10:
+            continue
+        nb = int(np.ceil(Lb / dmean))
+        xs = None
+        med = []
+        for b in range(nb):
+            inb = sel & (x0 >= b * dmean) & (x0 < (b + 1) * dmean)
+            med.append(np.median(sign * ux[inb]) if inb.any() else np.nan)
+        med = np.array(med)
+        # running median over three bins smooths single-grain noise
+        sm = np.array([np.nanmedian(med[max(0, b - 1):b + 2]) for b in range(nb)])
+        for b in range(nb):
+            if not np.isnan(sm[b]) and sm[b] < half:
+                if b == 0:
+                    xs = 0.0
+                else:  # linear interpolation between bin centres
+                    x1, x2 = (b - 0.5) * dmean, (b + 0.5) * dmean
+                    f1, f2 = sm[b - 1], sm[b]
+                    xs = x1 + (f1 - half) / (f1 - f2) * (x2 - x1) if f1 != f2 else x2
+                break
+        if xs is not None:
+            slip.append((xs, 0.5 * (ylo + yhi)))
+    slip = np.array(slip)
+    fit = slip[(slip[:, 1] > 0.15 * H_eff) & (slip[:, 1] < 0.85 * H_eff)] if slip.size else slip
+    angle = float("nan")
+    if len(fit) >= 3:
+        slope = np.polyfit(fit[:, 0], fit[:, 1], 1)[0]
+        angle = math.degrees(math.atan(abs(slope)))
+    return {"H_eff": H_eff, "dmean": dmean, "slip": slip, "angle": angle,
+            "n": int(common.size), "Kfac": 2 * Lb / (mass * g * H_eff)}
+
+
+def cmd_wall(args):
+    info = read_log(args.log)
+    pr = info["params"]
+    Lb, H0 = float(pr["Lb"]), float(pr["H0"])
+    thick = float(pr["nz"]) * float(pr["d"])
+    dmax = math.copysign(float(pr["dmax"]), float(pr["vw"]))
+    vw = float(pr["vw"])
+    dt = float(pr["dt"])
+    mass = info.get("mass_kg")
+    if mass is None:
+        raise ValueError("%s: no 'DEM_INITIAL_PARTICLES n MASS m' line" % args.log)
+    ini = read_dump(args.initial)
+    fin = read_dump(args.dump)
+    res = analyse_wall(ini, fin, Lb, H0, thick, mass, dmax)
+    F = read_ave_time(args.force)
+    t = F[:, 0] * dt
+    disp = np.abs(vw) * t
+    K = np.abs(F[:, 1]) * res["Kfac"]  # |x-force| of the grains on the wall
+    last = disp >= 0.9 * disp[-1]
+    K_end = float(np.mean(K[last]))
+    mode = "active" if vw < 0 else "passive"
+    extra = [
+        ("particle_count", "%d grains (%s after trimming)" % (fin["_natoms"], info["n_initial"])),
+        ("geometry", "quasi-2D slab %g m thick between frictionless planes; backfill Lb = %g m x "
+         "H0 = %g m behind a frictionless rigid wall at x = 0 (mesh), on a rough floor y = 0 (one "
+         "layer of frozen grains) against a frictionless far wall x = Lb; the wall is translated at %g m/s (%s) by %g m" %
+         (thick, Lb, H0, vw, mode, abs(dmax))),
+        ("bulk", "grain mass %.5g kg; surface height before the move H_eff = %.5f m; bulk unit "
+         "weight M g / (Lb t H_eff) = %.1f N/m3" % (mass, res["H_eff"],
+                                                    mass * 9.81 / (Lb * thick * res["H_eff"]))),
+        ("K_method", "K = F / (0.5 gamma H_eff^2 t) = 2 F Lb / (M g H_eff); F: x-force of the grains "
+         "on the wall (fix mesh/surface/stress), averaged over each output interval"),
+        ("K_initial", "%.4f" % K[0]),
+        ("K_final", "%.4f (mean over the last 10%% of the travel)" % K_end),
+        ("slip_method", "grains matched by id between the dumps before and after the move; per "
+         "0.1 H_eff strip, the x where the median horizontal displacement (one-grain bins, running "
+         "median of three) falls below half the wall travel; angle = least-squares slope of height "
+         "on x over 0.15-0.85 H_eff"),
+        ("wedge_angle_deg", "%.2f (from the horizontal)" % res["angle"]),
+        ("units", "displacement_over_H = wall travel / H_eff; K dimensionless"),
+    ]
+    hdr = header_lines(args, info, extra)
+    with open(args.output, "w") as f:
+        f.write("\n".join(hdr) + "\n")
+        f.write("displacement_over_H,K\n")
+        for a, b in zip(disp / res["H_eff"], K):
+            f.write("%.6f,%.5f\n" % (a, b))
+    slip_out = args.output[:-4] + "_slip.csv" if args.output.endswith(".csv") else args.output + "_slip"
+    with open(slip_out, "w") as f:
+        f.write("\n".join(hdr) + "\n")
+        f.write("x_over_H,y_over_H\n")
+        for xs, ys in res["slip"]:
+            f.write("%.5f,%.5f\n" % (xs / res["H_eff"], ys / res["H_eff"]))
+    print("wall %s: N=%d H_eff=%.4f K0=%.3f K_end=%.3f wedge=%.1f deg -> %s, %s" % (
+        mode, res["n"], res["H_eff"], K[0], K_end, res["angle"], args.output, slip_out))
+    return res
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
     sub = ap.add_subparsers(dest="mode", required=True)
-    for name in ("collapse", "repose"):
+    for name in ("collapse", "repose", "wall"):
         s = sub.add_parser(name)
         s.add_argument("dump", help="final text dump")
         s.add_argument("-o", "--output", required=True, help="CSV to write")
@@ -298,14 +441,18 @@ def main(argv=None):
         s.add_argument("--calibration-note", help="text for '# calibration:'")
         if name == "collapse":
             s.add_argument("--initial", help="dump before release (optional)")
+        elif name == "wall":
+            s.add_argument("--initial", required=True, help="dump before the wall moves")
+            s.add_argument("--force", required=True, help="fix ave/time file of the wall force")
         else:
             s.add_argument("--ledge", type=float, default=0.1,
                            help="ledge length if not in the log")
     args = ap.parse_args(argv)
     if args.mode == "collapse":
-        cmd_collapse(args)
-    else:
-        cmd_repose(args)
+        return cmd_collapse(args)
+    if args.mode == "wall":
+        return cmd_wall(args)
+    return cmd_repose(args)
 
 
 if __name__ == "__main__":
