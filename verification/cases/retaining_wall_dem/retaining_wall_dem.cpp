@@ -1,15 +1,11 @@
 // Retaining wall against a LIGGGHTS DEM reference (reference/dem/retaining_wall_2d.in): a smooth rigid
-// wall translated slowly away from (active) or into (passive) a dry granular backfill on a smooth floor,
-// against a smooth far wall; the same geometry, wall speed and travel as the DEM run. Scored against
-// the DEM: the earth-pressure coefficient at the end of the travel and the angle of the failure wedge's
-// slip line. Both are normalised and detected as reference/dem/postprocess.py does for the grains:
-//   K = F / (0.5 gamma0 H0^2)  (gamma0 H0: the weight per unit floor area, H0: height before the move),
-//   slip line: per 0.1 H0 strip of the initial soil, the x where the median horizontal displacement
-//   (bins one spacing wide, running median of three) falls below half the wall's travel; the wedge
-//   angle is the least-squares slope over 0.15-0.85 H0.
+// wall standing on a rough (no-slip) floor is translated slowly away from (active) or into (passive) a
+// dry granular backfill held by a smooth far wall; the same geometry, wall speed and travel as the DEM
+// run. Scored against the DEM: the earth-pressure coefficient at the end of the travel and the angle of
+// the failure wedge's slip line, both normalised and detected as reference/dem/postprocess.py does for
+// the grains: K = F / (0.5 gamma0 H0^2) (gamma0 H0: the weight per unit floor area, H0: the height
+// before the move); the slip line from the horizontal displacements (harness/slip_line.hpp).
 // Rankine's K and planes at 45 +/- phi/2 (smooth wall, horizontal surface) are recorded beside them.
-
-#include <gsl/gsl_fit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,70 +16,12 @@
 #include "harness/driver_registry.hpp"
 #include "harness/metrics.hpp"
 #include "harness/run_stats.hpp"
+#include "harness/slip_line.hpp"
 #include "soil/soil_fields.hpp"
 
 namespace geosph::verify {
 
 namespace {
-
-constexpr int kStrips = 10;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// Least-squares wedge angle [deg] of slip points (x/H, y/H) over 0.15 < y/H < 0.85; NaN under 3 points.
-double wedge_angle(const std::vector<double>& x, const std::vector<double>& y) {
-  std::vector<double> xs, ys;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    if (y[k] > 0.15 && y[k] < 0.85) { xs.push_back(x[k]); ys.push_back(y[k]); }
-  if (xs.size() < 3) return NAN;
-  double c0, c1, c00, c01, c11, ss;
-  gsl_fit_linear(xs.data(), 1, ys.data(), 1, xs.size(), &c0, &c1, &c00, &c01, &c11, &ss);
-  return std::atan(std::abs(c1)) * 180.0 / std::numbers::pi;
-}
-
-// Slip points (x, y) of the wedge and the wedge angle [deg from the horizontal]; `travel` is signed
-// (negative: active). Inputs: the initial positions and horizontal displacements of the soil.
-double slip_line(const std::vector<double>& x0, const std::vector<double>& y0, const std::vector<double>& ux,
-                 double H, double Lb, double bin, double travel, Series& line) {
-  const double half = 0.5 * std::abs(travel), sign = travel < 0 ? -1.0 : 1.0;
-  const int nb = static_cast<int>(std::ceil(Lb / bin));
-  for (int k = 0; k < kStrips; ++k) {
-    const double ylo = k * H / kStrips, yhi = (k + 1) * H / kStrips;
-    std::vector<std::vector<double>> in_bin(nb);
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < x0.size(); ++i) {
-      if (y0[i] < ylo || y0[i] >= yhi || x0[i] < 0) continue;
-      const int b = static_cast<int>(x0[i] / bin);
-      if (b < nb) { in_bin[b].push_back(sign * ux[i]); ++count; }
-    }
-    if (count < 10) continue;
-    std::vector<double> med(nb), sm(nb);
-    for (int b = 0; b < nb; ++b) med[b] = median(in_bin[b]);
-    for (int b = 0; b < nb; ++b) {
-      std::vector<double> around;
-      for (int c = std::max(0, b - 1); c <= std::min(nb - 1, b + 1); ++c)
-        if (!std::isnan(med[c])) around.push_back(med[c]);
-      sm[b] = median(around);
-    }
-    for (int b = 0; b < nb; ++b) {
-      if (std::isnan(sm[b]) || sm[b] >= half) continue;
-      double xs = 0.0;
-      if (b > 0) {  // linear interpolation between the bin centres
-        const double x1 = (b - 0.5) * bin, x2 = (b + 0.5) * bin;
-        xs = sm[b - 1] != sm[b] ? x1 + (sm[b - 1] - half) / (sm[b - 1] - sm[b]) * (x2 - x1) : x2;
-      }
-      line.x.push_back(xs / H);
-      line.y.push_back(0.5 * (ylo + yhi) / H);
-      break;
-    }
-  }
-  return wedge_angle(line.x, line.y);
-}
 
 Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& variant, double dx) {
   const nlohmann::json& v = cfg.spec.at("variants").at(variant);
@@ -144,13 +82,14 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
     yi.push_back(y0[P.id[i]]);
     ux.push_back(P.x[i] - soil.lo[0] - x0[P.id[i]]);
   }
-  Series sph_slip{"SPH slip points", "simulation", "slip_line", "x / H", "y / H", {}, {}};
-  const double angle_sph = ok ? slip_line(xi, yi, ux, H0, Lb, dx, moved, sph_slip) : NAN;
+  const SlipLine sph = slip_line(xi, yi, ux, H0, Lb, dx, moved);
+  const double angle_sph = ok ? sph.angle_deg : NAN;
+  Series sph_slip{"SPH slip points", "simulation", "slip_line", "x / H", "y / H", sph.x, sph.y};
 
   const Csv dem = read_csv(cfg.reference_file(ctx, v.at("reference").get<std::string>()).string());
   const Csv dem_slip = read_csv(cfg.reference_file(ctx, v.at("reference_slip").get<std::string>()).string());
   const double K_dem = dem.comment_number("K_final");
-  const double angle_dem = wedge_angle(dem_slip.column("x_over_H"), dem_slip.column("y_over_H"));
+  const double angle_dem = wedge_angle_deg(dem_slip.column("x_over_H"), dem_slip.column("y_over_H"));
   const double x_end = std::max(curve.x.empty() ? 0.0 : curve.x.back(), dem.column("displacement_over_H").back());
   rec.series.push_back(curve);
   rec.series.push_back({"LIGGGHTS DEM", "dem", "force", curve.xlabel, curve.ylabel, dem.column("displacement_over_H"),
