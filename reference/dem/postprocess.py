@@ -193,6 +193,15 @@ def analyse_repose(dump, ledge, dbin=None, fit_lo=0.15, fit_hi=0.85):
             "n": int(x.size), "dmean": dmean}
 
 
+def write_csv(path, hdr, columns, rows):
+    """A CSV: the provenance header, the column-name line, then the pre-formatted rows."""
+    with open(path, "w") as f:
+        f.write("\n".join(hdr) + "\n")
+        f.write(columns + "\n")
+        for row in rows:
+            f.write(row + "\n")
+
+
 def header_lines(args, info, extra):
     params = info["params"]
     lines = [
@@ -249,12 +258,8 @@ def cmd_collapse(args):
         ini = analyse_collapse(read_dump(args.initial))
         extra.append(("initial_profile_area_m2", "%.5g (same method on the "
                       "dump before release)" % ini["area"]))
-    hdr = header_lines(args, info, extra)
-    with open(args.output, "w") as f:
-        f.write("\n".join(hdr) + "\n")
-        f.write("x,y\n")
-        for xc, h in zip(res["x"], res["h"]):
-            f.write("%.6f,%.6f\n" % (xc, h))
+    write_csv(args.output, header_lines(args, info, extra), "x,y",
+              ("%.6f,%.6f" % (xc, h) for xc, h in zip(res["x"], res["h"])))
     print("collapse: N=%d runout=%.4f m runout_2layer=%.4f m final_height="
           "%.4f m area=%.5g m2 -> %s" % (res["n"], res["runout"],
                                          res["runout2"], res["height"],
@@ -278,13 +283,8 @@ def cmd_repose(args):
         ("repose_angle_se_deg", "%.2f" % res["angle_se"]),
         ("units", "x [m], y [m]"),
     ]
-    hdr = header_lines(args, info, extra)
-    with open(args.output, "w") as f:
-        f.write("\n".join(hdr) + "\n")
-        f.write("x,y\n")
-        for xc, h in zip(res["x"], res["h"]):
-            if not np.isnan(h):
-                f.write("%.6f,%.6f\n" % (xc, h))
+    write_csv(args.output, header_lines(args, info, extra), "x,y",
+              ("%.6f,%.6f" % (xc, h) for xc, h in zip(res["x"], res["h"]) if not np.isnan(h)))
     print("repose: mu=%s mur=%s angle=%.2f +- %.2f deg (N=%d) -> %s" % (
         info["params"].get("mu"), info["params"].get("mur"), res["angle"],
         res["angle_se"], res["n"], args.output))
@@ -304,7 +304,7 @@ def read_ave_time(path):
     return np.array(rows)
 
 
-def analyse_wall(ini, fin, Lb, H0, thick, mass, dmax, g=9.81, rows=10):
+def analyse_wall(ini, fin, Lb, thick, mass, dmax, g=9.81, rows=10):
     """Earth-pressure normalisation and slip line of a translated wall.
 
     gamma H = M g / (Lb t) is the weight per unit floor area; H_eff is the mean
@@ -365,13 +365,14 @@ def analyse_wall(ini, fin, Lb, H0, thick, mass, dmax, g=9.81, rows=10):
         slope = np.polyfit(fit[:, 0], fit[:, 1], 1)[0]
         angle = math.degrees(math.atan(abs(slope)))
     return {"H_eff": H_eff, "dmean": dmean, "slip": slip, "angle": angle,
-            "n": int(common.size), "Kfac": 2 * Lb / (mass * g * H_eff)}
+            "n": int(common.size), "Kfac": 2 * Lb / (mass * g * H_eff),
+            "unit_weight": mass * g / (Lb * thick * H_eff)}
 
 
 def cmd_wall(args):
     info = read_log(args.log)
     pr = info["params"]
-    Lb, H0 = float(pr["Lb"]), float(pr["H0"])
+    Lb, H0 = float(pr["Lb"]), float(pr["H0"])  # H0: the trimming height, for the geometry line
     thick = float(pr["nz"]) * float(pr["d"])
     dmax = math.copysign(float(pr["dmax"]), float(pr["vw"]))
     vw = float(pr["vw"])
@@ -381,7 +382,7 @@ def cmd_wall(args):
         raise ValueError("%s: no 'DEM_INITIAL_PARTICLES n MASS m' line" % args.log)
     ini = read_dump(args.initial)
     fin = read_dump(args.dump)
-    res = analyse_wall(ini, fin, Lb, H0, thick, mass, dmax)
+    res = analyse_wall(ini, fin, Lb, thick, mass, dmax)
     F = read_ave_time(args.force)
     t = F[:, 0] * dt
     disp = np.abs(vw) * t
@@ -396,8 +397,7 @@ def cmd_wall(args):
          "layer of frozen grains) against a frictionless far wall x = Lb; the wall is translated at %g m/s (%s) by %g m" %
          (thick, Lb, H0, vw, mode, abs(dmax))),
         ("bulk", "grain mass %.5g kg; surface height before the move H_eff = %.5f m; bulk unit "
-         "weight M g / (Lb t H_eff) = %.1f N/m3" % (mass, res["H_eff"],
-                                                    mass * 9.81 / (Lb * thick * res["H_eff"]))),
+         "weight M g / (Lb t H_eff) = %.1f N/m3" % (mass, res["H_eff"], res["unit_weight"])),
         ("K_method", "K = F / (0.5 gamma H_eff^2 t) = 2 F Lb / (M g H_eff); F: x-force of the grains "
          "on the wall (fix mesh/surface/stress), averaged over each output interval"),
         ("K_initial", "%.4f" % K[0]),
@@ -410,17 +410,11 @@ def cmd_wall(args):
         ("units", "displacement_over_H = wall travel / H_eff; K dimensionless"),
     ]
     hdr = header_lines(args, info, extra)
-    with open(args.output, "w") as f:
-        f.write("\n".join(hdr) + "\n")
-        f.write("displacement_over_H,K\n")
-        for a, b in zip(disp / res["H_eff"], K):
-            f.write("%.6f,%.5f\n" % (a, b))
+    write_csv(args.output, hdr, "displacement_over_H,K",
+              ("%.6f,%.5f" % (a, b) for a, b in zip(disp / res["H_eff"], K)))
     slip_out = args.output[:-4] + "_slip.csv" if args.output.endswith(".csv") else args.output + "_slip"
-    with open(slip_out, "w") as f:
-        f.write("\n".join(hdr) + "\n")
-        f.write("x_over_H,y_over_H\n")
-        for xs, ys in res["slip"]:
-            f.write("%.5f,%.5f\n" % (xs / res["H_eff"], ys / res["H_eff"]))
+    write_csv(slip_out, hdr, "x_over_H,y_over_H",
+              ("%.5f,%.5f" % (xs / res["H_eff"], ys / res["H_eff"]) for xs, ys in res["slip"]))
     print("wall %s: N=%d H_eff=%.4f K0=%.3f K_end=%.3f wedge=%.1f deg -> %s, %s" % (
         mode, res["n"], res["H_eff"], K[0], K_end, res["angle"], args.output, slip_out))
     return res
