@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Regenerate the DEM (LIGGGHTS) references in reference/dem/*.csv:
+#   1.-2. unless DEM_COLLAPSE=0 (e.g. to regenerate the wall alone):
 #   1. angle-of-repose calibration (ledge test) at the chosen micro-parameters,
 #      two seeds -> reference/dem/calibration_repose_seed*.csv
 #   2. quasi-2D granular column collapse, Bui et al. (2008) set-up, a = 0.5
@@ -57,13 +58,16 @@ run() {  # run NAME INPUT [-var ...]
 
 cases=("0.5 0.2")
 [ "${DEM_ONLY_A05:-0}" = "1" ] || cases+=("1 0.1" "2 0.05")
-for seed in 15485863 32452867; do
+[ "${DEM_COLLAPSE:-1}" = "1" ] || cases=()
+seeds=(15485863 32452867)
+[ "${DEM_COLLAPSE:-1}" = "1" ] || seeds=()
+for seed in ${seeds[@]+"${seeds[@]}"}; do
   run "repose_$seed" "$DEM/calibration.in" -var seed "$seed"
   "$PY" "$DEM/postprocess.py" repose "$WORK/repose_${seed}_final.dump" --log "$WORK/repose_$seed.log" \
     --input "$DEM/calibration.in" --command "$CMDLINE" --date "$DATE" --calibration-note "$CAL_NOTE" \
     -o "$DEM/calibration_repose_seed$seed.csv"
 done
-for c in "${cases[@]}"; do
+for c in ${cases[@]+"${cases[@]}"}; do
   set -- $c
   a="$1"; L0="$2"
   run "collapse_a$a" "$DEM/collapse_2d.in" -var L0 "$L0" -var H0 0.1
