@@ -315,8 +315,10 @@ def analyse_wall(ini, fin, Lb, thick, mass, dmax, g=9.81, rows=10):
     displacement, towards the wall side of the strip, first falls below half
     the wall's travel (a running median over x-bins one grain wide).  The
     wedge angle is the least-squares slope of height against slip-point x
-    over the strips 0.15 H_eff < y < 0.85 H_eff (the top strip is disturbed
-    by the settling surface, the bottom one by the wall-floor corner).
+    over the eight strips centred at 0.15-0.85 H_eff (the top strip is
+    disturbed by the settling surface, the bottom one by the wall-floor
+    corner); the window 0.1 < y/H_eff < 0.9 has its edges between strip
+    centres, so rounding cannot move a strip in or out.
     """
     dmean = float(np.mean(2 * ini["radius"]))
     xb, hb = surface_profile(ini["x"], ini["y"], ini["radius"], dmean)
@@ -359,7 +361,7 @@ def analyse_wall(ini, fin, Lb, thick, mass, dmax, g=9.81, rows=10):
         if xs is not None:
             slip.append((xs, 0.5 * (ylo + yhi)))
     slip = np.array(slip)
-    fit = slip[(slip[:, 1] > 0.15 * H_eff) & (slip[:, 1] < 0.85 * H_eff)] if slip.size else slip
+    fit = slip[(slip[:, 1] > 0.1 * H_eff) & (slip[:, 1] < 0.9 * H_eff)] if slip.size else slip
     angle = float("nan")
     if len(fit) >= 3:
         slope = np.polyfit(fit[:, 0], fit[:, 1], 1)[0]
@@ -405,7 +407,7 @@ def cmd_wall(args):
         ("slip_method", "grains matched by id between the dumps before and after the move; per "
          "0.1 H_eff strip, the x where the median horizontal displacement (one-grain bins, running "
          "median of three) falls below half the wall travel; angle = least-squares slope of height "
-         "on x over 0.15-0.85 H_eff"),
+         "on x over the strips centred at 0.15-0.85 H_eff"),
         ("wedge_angle_deg", "%.2f (from the horizontal)" % res["angle"]),
         ("units", "displacement_over_H = wall travel / H_eff; K dimensionless"),
     ]

@@ -23,8 +23,10 @@ double median(std::vector<double> v) {
 
 double wedge_angle_deg(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<double> xs, ys;
+  // the strips centred at 0.15-0.85 H; the window's edges lie between strip centres so that rounding
+  // of a centre cannot move a strip in or out
   for (std::size_t k = 0; k < x.size(); ++k)
-    if (y[k] > 0.15 && y[k] < 0.85) { xs.push_back(x[k]); ys.push_back(y[k]); }
+    if (y[k] > 0.1 && y[k] < 0.9) { xs.push_back(x[k]); ys.push_back(y[k]); }
   if (xs.size() < 3) return NAN;
   double c0, c1, c00, c01, c11, ss;
   gsl_fit_linear(xs.data(), 1, ys.data(), 1, xs.size(), &c0, &c1, &c00, &c01, &c11, &ss);

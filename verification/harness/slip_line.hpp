@@ -7,7 +7,7 @@ namespace geosph::verify {
 
 struct SlipLine {
   std::vector<double> x, y;  // slip points, in units of H (x from the wall, y from the floor)
-  double angle_deg = 0;      // least-squares angle from the horizontal over 0.15 H < y < 0.85 H; NaN under 3 points
+  double angle_deg = 0;      // least-squares angle from the horizontal over the strips centred at 0.15-0.85 H; NaN under 3 points
 };
 
 // Positions (x0, y0) before the move, relative to the wall's foot, and horizontal displacements ux.
@@ -17,7 +17,9 @@ struct SlipLine {
 SlipLine slip_line(const std::vector<double>& x0, const std::vector<double>& y0, const std::vector<double>& ux,
                    double H, double Lb, double bin, double travel);
 
-// The least-squares angle [deg from the horizontal] of points (x, y) over 0.15 < y < 0.85; NaN under 3.
+// The least-squares angle [deg from the horizontal] of points (x, y) [units of H] over 0.1 < y < 0.9,
+// i.e. the eight strips centred at 0.15-0.85 (the bottom strip is disturbed by the wall-floor corner,
+// the top one by the settling surface); NaN under 3 points.
 double wedge_angle_deg(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace geosph::verify

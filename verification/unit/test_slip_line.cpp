@@ -67,3 +67,22 @@ TEST(SlipLine, WedgeAngleNeedsThreePointsInTheFittedHeight) {
   EXPECT_NEAR(wedge_angle_deg({0.1, 0.2, 0.3, 0.9}, {0.2, 0.4, 0.6, 0.95}), std::atan(2.0) * 180 / std::numbers::pi,
               1e-9);
 }
+
+TEST(SlipLine, WedgeAngleFitsTheEightInteriorStrips) {
+  // slip points at the ten strip centres: the eight interior ones on a 45 deg line, the bottom and top
+  // strips far off it; the fit must take all eight (centres 0.15 and 0.85 included) and neither end
+  std::vector<double> x, y;
+  for (int k = 0; k < 10; ++k) {
+    const double yc = 0.05 + 0.1 * k;
+    y.push_back(yc);
+    x.push_back(k == 0 || k == 9 ? 5.0 : yc);
+  }
+  EXPECT_NEAR(wedge_angle_deg(x, y), 45.0, 1e-9);
+  // the points at 0.15 and 0.85 lie off the line: leaving either out would not give this angle
+  x[1] = 0.25;
+  x[8] = 0.95;
+  const double with_ends = wedge_angle_deg(x, y);
+  x.erase(x.begin() + 8), y.erase(y.begin() + 8), x.erase(x.begin() + 1), y.erase(y.begin() + 1);
+  EXPECT_NEAR(wedge_angle_deg(x, y), 45.0, 1e-9);
+  EXPECT_GT(std::abs(with_ends - 45.0), 1.0);
+}
