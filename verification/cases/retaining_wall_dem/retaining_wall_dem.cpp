@@ -82,8 +82,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
     yi.push_back(y0[P.id[i]]);
     ux.push_back(P.x[i] - soil.lo[0] - x0[P.id[i]]);
   }
-  const SlipLine sph = slip_line(xi, yi, ux, H0, Lb, dx, moved);
-  const double angle_sph = ok ? sph.angle_deg : NAN;
+  // an unstable run's displacements need not be finite (the medians would sort NaNs): no slip line then
+  const SlipLine sph = ok ? slip_line(xi, yi, ux, H0, Lb, dx, moved) : SlipLine{{}, {}, NAN};
+  const double angle_sph = sph.angle_deg;
   Series sph_slip{"SPH slip points", "simulation", "slip_line", "x / H", "y / H", sph.x, sph.y};
 
   const Csv dem = read_csv(cfg.reference_file(ctx, v.at("reference").get<std::string>()).string());
