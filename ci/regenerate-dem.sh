@@ -56,25 +56,25 @@ run() {  # run NAME INPUT [-var ...]
   CMDLINE="liggghts -in reference/dem/$(basename "$input") -var mu $MU -var mur $MUR $*${EXTRA[*]:+ ${EXTRA[*]}} -var out $name -log $name.log"
 }
 
-cases=("0.5 0.2")
-[ "${DEM_ONLY_A05:-0}" = "1" ] || cases+=("1 0.1" "2 0.05")
-[ "${DEM_COLLAPSE:-1}" = "1" ] || cases=()
-seeds=(15485863 32452867)
-[ "${DEM_COLLAPSE:-1}" = "1" ] || seeds=()
-for seed in ${seeds[@]+"${seeds[@]}"}; do
-  run "repose_$seed" "$DEM/calibration.in" -var seed "$seed"
-  "$PY" "$DEM/postprocess.py" repose "$WORK/repose_${seed}_final.dump" --log "$WORK/repose_$seed.log" \
-    --input "$DEM/calibration.in" --command "$CMDLINE" --date "$DATE" --calibration-note "$CAL_NOTE" \
-    -o "$DEM/calibration_repose_seed$seed.csv"
-done
-for c in ${cases[@]+"${cases[@]}"}; do
-  set -- $c
-  a="$1"; L0="$2"
-  run "collapse_a$a" "$DEM/collapse_2d.in" -var L0 "$L0" -var H0 0.1
-  "$PY" "$DEM/postprocess.py" collapse "$WORK/collapse_a${a}_final.dump" --initial "$WORK/collapse_a${a}_initial.dump" \
-    --log "$WORK/collapse_a$a.log" --input "$DEM/collapse_2d.in" --command "$CMDLINE" --date "$DATE" \
-    --calibration-note "$CAL_NOTE" -o "$DEM/collapse_a$a.csv"
-done
+# Calibration and collapse (skip with DEM_COLLAPSE=0, e.g. to regenerate the wall alone).
+if [ "${DEM_COLLAPSE:-1}" = "1" ]; then
+  cases=("0.5 0.2")
+  [ "${DEM_ONLY_A05:-0}" = "1" ] || cases+=("1 0.1" "2 0.05")
+  for seed in 15485863 32452867; do
+    run "repose_$seed" "$DEM/calibration.in" -var seed "$seed"
+    "$PY" "$DEM/postprocess.py" repose "$WORK/repose_${seed}_final.dump" --log "$WORK/repose_$seed.log" \
+      --input "$DEM/calibration.in" --command "$CMDLINE" --date "$DATE" --calibration-note "$CAL_NOTE" \
+      -o "$DEM/calibration_repose_seed$seed.csv"
+  done
+  for c in "${cases[@]}"; do
+    set -- $c
+    a="$1"; L0="$2"
+    run "collapse_a$a" "$DEM/collapse_2d.in" -var L0 "$L0" -var H0 0.1
+    "$PY" "$DEM/postprocess.py" collapse "$WORK/collapse_a${a}_final.dump" --initial "$WORK/collapse_a${a}_initial.dump" \
+      --log "$WORK/collapse_a$a.log" --input "$DEM/collapse_2d.in" --command "$CMDLINE" --date "$DATE" \
+      --calibration-note "$CAL_NOTE" -o "$DEM/collapse_a$a.csv"
+  done
+fi
 
 # Sensitivity set (skip with DEM_SENSITIVITY=0): stiffer micro-parameters
 # mu = 0.4, mu_r = 0.1 (ledge repose angle ~30 deg), a = 0.5 only.
