@@ -76,6 +76,32 @@ void CellList::mark_permuted() {
   cached_ = false;
 }
 
+IndexRanges CellList::ranges_of(std::initializer_list<Kind> kinds) const {
+  IndexRanges out;
+  if (!cached_) {  // gather ignores the ranges then
+    out.r[0] = {0, std::numeric_limits<std::uint32_t>::max()};
+    out.n = 1;
+    return out;
+  }
+  std::array<std::array<std::uint32_t, 2>, 8> r{};
+  int m = 0;
+  for (const Kind k : kinds) {
+    const auto c = static_cast<std::size_t>(k);
+    if (kind_lo_[c] < kind_hi_[c]) r[static_cast<std::size_t>(m++)] = {kind_lo_[c], kind_hi_[c]};
+  }
+  for (int q = 1; q < m; ++q)  // by lo (a handful of kinds)
+    for (int t = q; t > 0 && r[static_cast<std::size_t>(t)][0] < r[static_cast<std::size_t>(t - 1)][0]; --t)
+      std::swap(r[static_cast<std::size_t>(t)], r[static_cast<std::size_t>(t - 1)]);
+  for (int q = 0; q < m; ++q) {  // merge overlapping or touching ranges
+    const auto& x = r[static_cast<std::size_t>(q)];
+    if (out.n > 0 && x[0] <= out.r[static_cast<std::size_t>(out.n - 1)][1])
+      out.r[static_cast<std::size_t>(out.n - 1)][1] = std::max(out.r[static_cast<std::size_t>(out.n - 1)][1], x[1]);
+    else
+      out.r[static_cast<std::size_t>(out.n++)] = x;
+  }
+  return out;
+}
+
 long CellList::find_outside(const Particles& P, const Box& box) const {
   const std::size_t n = P.size();
   long first_out = std::numeric_limits<long>::max();
@@ -107,6 +133,28 @@ void CellList::rebuild_pairs(const Particles& P) {
   cached_ = false;
   if (!(skin_ > 0)) return;  // no list: queries scan the cells
   const std::size_t n = P.size();
+  kind_lo_.fill(std::numeric_limits<std::uint32_t>::max());
+  kind_hi_.fill(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(P.kind[i]);
+    kind_lo_[k] = std::min(kind_lo_[k], static_cast<std::uint32_t>(i));
+    kind_hi_[k] = static_cast<std::uint32_t>(i + 1);
+  }
+  // Each kind's particles in one block of indices (a reorder grouped by kind): the scan then meets the
+  // blocks interleaved cell by cell, each block's part ascending, and the lists are put in block order
+  // first, so that the insertion sort below has little left to do.
+  std::array<std::uint32_t, 8> cuts{};  // the blocks' first indices after the first
+  int ncut = 0;
+  std::size_t covered = 0;
+  for (std::size_t k = 0; k < kind_lo_.size(); ++k)
+    if (kind_lo_[k] < kind_hi_[k]) {
+      covered += kind_hi_[k] - kind_lo_[k];
+      if (kind_lo_[k] > 0) cuts[static_cast<std::size_t>(ncut++)] = kind_lo_[k];
+    }
+  const bool blocks = covered == n && ncut > 0;
+  for (int q = 1; q < ncut; ++q)
+    for (int t = q; t > 0 && cuts[static_cast<std::size_t>(t)] < cuts[static_cast<std::size_t>(t - 1)]; --t)
+      std::swap(cuts[static_cast<std::size_t>(t)], cuts[static_cast<std::size_t>(t - 1)]);
   pair_start_.assign(n + 1, 0);
   thread_pairs_.resize(static_cast<std::size_t>(omp_get_max_threads()));
   thread_images_.resize(thread_pairs_.size());
@@ -120,9 +168,29 @@ void CellList::rebuild_pairs(const Particles& P) {
     mine.clear();
     my_images.clear();
     Neighbors nb;
+    std::vector<std::uint32_t> tj;
+    std::vector<std::uint8_t> ti, key;
     for (std::size_t i = b; i < e; ++i) {
       if (dim_ == 2) gather_scan<2, true>(P, i, nb);
       else gather_scan<3, true>(P, i, nb);
+      if (blocks) {  // stable partition by block (a counting sort on the block number)
+        tj.resize(nb.n); ti.resize(nb.n); key.resize(nb.n);
+        std::array<std::size_t, 9> at{};
+        for (std::size_t c = 0; c < nb.n; ++c) {
+          std::uint8_t q = 0;
+          while (q < ncut && nb.j[c] >= cuts[q]) ++q;
+          key[c] = q;
+          ++at[q + 1u];
+        }
+        for (int q = 0; q < ncut; ++q) at[static_cast<std::size_t>(q) + 1] += at[static_cast<std::size_t>(q)];
+        for (std::size_t c = 0; c < nb.n; ++c) {
+          const std::size_t d = at[key[c]]++;
+          tj[d] = nb.j[c];
+          ti[d] = nb.image[c];
+        }
+        std::copy(tj.begin(), tj.end(), nb.j.begin());
+        std::copy(ti.begin(), ti.end(), nb.image.begin());
+      }
       // insertion sort by j: the scan visits the cells in index order, and the particles are sorted by
       // cell every few steps, so the scan's order is nearly ascending already
       for (std::size_t c = 1; c < nb.n; ++c) {

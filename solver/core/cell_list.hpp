@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <stdexcept>
 #include <span>
 #include <vector>
@@ -37,6 +38,15 @@ struct Neighbors {
     if (j.size() >= cap) return;
     j.resize(cap); dx.resize(cap); dy.resize(cap); dz.resize(cap); r2.resize(cap); image.resize(cap);
   }
+};
+
+// Particle index ranges [lo, hi) that hold every particle of some kinds (CellList::ranges_of), ascending
+// and disjoint: a query restricted to them reads only the part of a particle's list it needs. They bound
+// the kinds wherever their particles lie; they are tight when each kind's particles are contiguous, as
+// after a reorder grouped by kind (Simulation::neighbour_search).
+struct IndexRanges {
+  std::array<std::array<std::uint32_t, 2>, 6> r{};
+  int n = 0;
 };
 
 // What a neighbour query reads and writes, as raw pointers: the positions, and the arrays of a
@@ -116,6 +126,22 @@ class CellList {
     if (dim_ == 2) gather<2>(P, i, out);
     else gather<3>(P, i, out);
   }
+  // The same neighbours restricted to the index ranges `only` (ranges_of: the kinds a pair loop reads),
+  // in the same ascending order: a loop that skips the other kinds sums the same terms in the same order.
+  // Without a pair list it gathers them all.
+  template <int Dim = 3>
+  void gather(const Particles& P, std::size_t i, Neighbors& out, const IndexRanges& only) const {
+    if (!cached_) { gather_scan<Dim>(P, i, out); return; }
+    if (any_periodic_) gather_cached_with<Dim, true>(P, i, out, &only);
+    else gather_cached_with<Dim, false>(P, i, out, &only);
+  }
+  void gather_any_dim(const Particles& P, std::size_t i, Neighbors& out, const IndexRanges& only) const {
+    if (dim_ == 2) gather<2>(P, i, out, only);
+    else gather<3>(P, i, out, only);
+  }
+  // Index ranges holding every particle of the given kinds, as of the last rebuild_pairs (kinds do not
+  // change between builds); the whole index range without a pair list.
+  IndexRanges ranges_of(std::initializer_list<Kind> kinds) const;
   int dim() const { return dim_; }
 
   // A Verlet pair list (Verlet 1967, Phys. Rev. 159, 98; with a skin as in Allen & Tildesley 1987,
@@ -266,15 +292,30 @@ class CellList {
     else gather_cached_with<Dim, false>(P, i, out);
   }
   template <int Dim, bool Periodic>
-  void gather_cached_with(const Particles& P, std::size_t i, Neighbors& out) const {
-    const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
+  void gather_cached_with(const Particles& P, std::size_t i, Neighbors& out, const IndexRanges* only = nullptr) const {
     const std::size_t k0 = pair_start_[i], n = pair_start_[i + 1] - k0;
+    [[maybe_unused]] const GatherPointers ptr(P, out, n);
+    const std::uint32_t* list = pair_j_.data() + k0;
+    if (!only) { out.n = gather_listed<Dim, Periodic>(P, i, ptr, 0, n, 0); return; }
+    std::size_t c = 0;
+    for (int q = 0; q < only->n; ++q) {  // each range's part of the ascending list
+      const std::size_t a = static_cast<std::size_t>(std::lower_bound(list, list + n, only->r[q][0]) - list);
+      const std::size_t b = static_cast<std::size_t>(std::lower_bound(list + a, list + n, only->r[q][1]) - list);
+      c = gather_listed<Dim, Periodic>(P, i, ptr, a, b, c);
+    }
+    out.n = c;
+  }
+  // Entries [a, b) of i's list into the gather arrays from position c on; returns the new count.
+  template <int Dim, bool Periodic>
+  std::size_t gather_listed(const Particles& P, std::size_t i, const GatherPointers& ptr, std::size_t a, std::size_t b,
+                            std::size_t c) const {
+    const double xi = P.x[i], yi = P.y[i], zi = P.z[i];
+    const std::size_t k0 = pair_start_[i];
     const double r2max = r2max_;
-    [[maybe_unused]] const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = GatherPointers(P, out, n);
+    [[maybe_unused]] const auto [px, py, pz, oj, ox, oy, oz, orr, oi] = ptr;
     const std::uint32_t* __restrict list = pair_j_.data() + k0;
     const std::uint8_t* __restrict img = Periodic ? pair_image_.data() + k0 : nullptr;
-    std::size_t c = 0;
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = a; k < b; ++k) {
       const std::uint32_t j = list[k];
       double dx = xi - px[j], dy = yi - py[j], dz = Dim == 3 ? zi - pz[j] : 0.0;
       if constexpr (Periodic) {
@@ -288,7 +329,7 @@ class CellList {
       if constexpr (Dim == 3) oz[c] = dz;
       c += static_cast<std::size_t>(r2 < r2max);
     }
-    out.n = c;
+    return c;
   }
   // A periodic image as one number, 0..26: the sign of its shift along each axis, (sx, sy, sz) =
   // image_shift_[code] (the values wrap() gives: 0 or +-len_, exactly).
@@ -368,6 +409,8 @@ class CellList {
   std::vector<std::size_t> pair_start_;
   std::vector<std::uint32_t> pair_j_;
   std::vector<std::uint8_t> pair_image_;  // periodic scenes only
+  // per kind, the lowest index and one past the highest at the list's build (lo >= hi: none)
+  std::array<std::uint32_t, 8> kind_lo_{}, kind_hi_{};
   std::vector<std::vector<std::uint32_t>> thread_pairs_;
   std::vector<std::vector<std::uint8_t>> thread_images_;
 };

@@ -118,6 +118,8 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   const double* swm = P.find(SoilWallFields::m);
   const double* swrho = P.find(SoilWallFields::rho);
   const double* vol = volumes(P);
+  const IndexRanges for_soil = cells.ranges_of({Kind::Fluid});  // the kinds each side reads below
+  const IndexRanges for_water = cells.ranges_of({Kind::Fluid, Kind::Soil, Kind::DummyWall});
 #pragma omp parallel
   {
   Neighbors nb;
@@ -127,7 +129,7 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
     if (ki != Kind::Soil && ki != Kind::Fluid) continue;
     const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
     double sum = 0, sg = 0, g[3] = {0, 0, 0}, gn[3] = {0, 0, 0};
-    cells.gather_any_dim(P, i, nb);
+    cells.gather_any_dim(P, i, nb, ki == Kind::Soil ? for_soil : for_water);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
       const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
@@ -281,14 +283,52 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   //    correction everywhere the Terzaghi isochrone error rose from 0.013 to 0.068 at H/dx = 20) and
   //    (b) where the water has a full support (at a water free surface the missing neighbours stand for
   //    the drained p = 0, which the plain sums already express).
+  //
+  // 2. drag: each particle's rate C_i = sum_j c_ij and its partner phase's c-weighted velocity,
+  //    acceleration (without drag) and partial density, for the implicit update in Simulation::kick.
+  //    c_ij = beta V_j W_ij 2/(S_i + S_j) / rho_i, beta of the soil particle of the pair.
+  //    beta of every particle once (0: not a saturated skeleton particle), not per pair: the pair loop
+  //    was a quarter of the coupled step's time with the material lookup and division inside it.
+  // The skeleton's drag sums share its pressure-force pass (their partners, the water, get no force in
+  // it); the water's follow, as they read the skeleton's acceleration with the pressure force.
+  beta_.resize(n);
+  double* bs = beta_.data();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) bs[i] = saturated(i) ? beta(i) : 0.0;
+  // the drag sums of particle i from its neighbour q with kernel value W, partner beta b
+  struct DragSums {
+    double c = 0, sv[3] = {0, 0, 0}, sa[3] = {0, 0, 0}, sr = 0;
+  };
+  const auto add_drag = [&](DragSums& d, std::uint32_t j, double b, double W, double Si, double rhoi) {
+    const double cij = b * vol[j] * W * 2.0 / ((Si + S[j]) * rhoi);
+    d.c += cij;
+    d.sv[0] += cij * P.vx[j]; d.sv[1] += cij * P.vy[j]; d.sv[2] += cij * P.vz[j];
+    if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner
+      d.sr += cij * kImmovable;
+      return;
+    }
+    d.sa[0] += cij * P.ax[j]; d.sa[1] += cij * P.ay[j]; d.sa[2] += cij * P.az[j];
+    d.sr += cij * P.rho[j];
+  };
+  const auto store_drag = [&](std::size_t i, const DragSums& d) {
+    C[i] = d.c;
+    if (d.c <= 0) return;
+    for (int a = 0; a < 3; ++a) { pv[a][i] = d.sv[a] / d.c; pa[a][i] = d.sa[a] / d.c; }
+    prho[i] = d.sr / d.c;
+  };
+  const IndexRanges water_and_walls = cells.ranges_of({Kind::Fluid, Kind::DummyWall});
+  const IndexRanges skeleton = cells.ranges_of({Kind::Soil});
 #pragma omp parallel
   {
   Neighbors nb;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
+    C[i] = 0;
     if (!saturated(i)) continue;
     double fp[3] = {0, 0, 0}, k[3] = {0, 0, 0}, sp = 0, sw = 0, jump = 0;
-    cells.gather_any_dim(P, i, nb);
+    const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
+    DragSums drag;
+    cells.gather_any_dim(P, i, nb, water_and_walls);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
       const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
@@ -303,55 +343,34 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
       for (int a = 0; a < 3; ++a) { fp[a] += P.p[j] * b[a]; k[a] += b[a]; }
       sp += Vj * W * P.p[j];
       sw += Vj * W;
-      if (kj == Kind::Fluid) jump = std::max(jump, std::abs(por[j] - por[i]));
+      if (kj == Kind::Fluid) {
+        jump = std::max(jump, std::abs(por[j] - por[i]));
+        if (bi > 0) add_drag(drag, j, bi, W, Si, rhoi);
+      }
     }
     const double gauge = std::clamp((jump - kJumpFrom) / (kJumpFull - kJumpFrom), 0.0, 1.0);
     const double p_ref = sw >= kFullSupport ? gauge * sp / sw : 0.0;
     P.ax[i] -= (fp[0] - p_ref * k[0]) / P.rho[i];
     P.ay[i] -= (fp[1] - p_ref * k[1]) / P.rho[i];
     P.az[i] -= (fp[2] - p_ref * k[2]) / P.rho[i];
+    store_drag(i, drag);
   }
   }
-  // 2. drag: each particle's rate C_i = sum_j c_ij and its partner phase's c-weighted velocity,
-  //    acceleration (without drag) and partial density, for the implicit update in Simulation::kick.
-  //    c_ij = beta V_j W_ij 2/(S_i + S_j) / rho_i, beta of the soil particle of the pair.
-  //    beta of every particle once (0: not a saturated skeleton particle), not per pair: the pair loop
-  //    was a quarter of the coupled step's time with the material lookup and division inside it
-  beta_.resize(n);
-  double* bs = beta_.data();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) bs[i] = saturated(i) ? beta(i) : 0.0;
 #pragma omp parallel
   {
   Neighbors nb;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    const Kind ki = P.kind[i];
-    C[i] = 0;
-    if (!(bs[i] > 0) && ki != Kind::Fluid) continue;
-    const bool soil_i = ki == Kind::Soil;
-    const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
-    double c = 0, sv[3] = {0, 0, 0}, sa[3] = {0, 0, 0}, sr = 0;
-    cells.gather_any_dim(P, i, nb);
+    if (P.kind[i] != Kind::Fluid) continue;
+    const double rhoi = P.rho[i], Si = S[i];
+    DragSums drag;
+    cells.gather_any_dim(P, i, nb, skeleton);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
-      const double r2 = nb.r2[q];
-      const double b = soil_i ? (P.kind[j] == Kind::Fluid ? bi : 0.0) : bs[j];  // the pair's skeleton beta
-      if (!(b > 0)) continue;
-      const double cij = b * vol[j] * kernel.W(std::sqrt(r2)) * 2.0 / ((Si + S[j]) * rhoi);
-      c += cij;
-      sv[0] += cij * P.vx[j]; sv[1] += cij * P.vy[j]; sv[2] += cij * P.vz[j];
-      if (fixed && fixed[j] > 0) {  // a held skeleton (a porous plate): an immovable partner
-        sr += cij * kImmovable;
-        continue;
-      }
-      sa[0] += cij * P.ax[j]; sa[1] += cij * P.ay[j]; sa[2] += cij * P.az[j];
-      sr += cij * P.rho[j];
+      if (!(bs[j] > 0)) continue;  // saturated skeleton partners only
+      add_drag(drag, j, bs[j], kernel.W(std::sqrt(nb.r2[q])), Si, rhoi);
     }
-    C[i] = c;
-    if (c <= 0) continue;
-    for (int a = 0; a < 3; ++a) { pv[a][i] = sv[a] / c; pa[a][i] = sa[a] / c; }
-    prho[i] = sr / c;
+    store_drag(i, drag);
   }
   }
 }

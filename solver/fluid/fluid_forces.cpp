@@ -93,6 +93,7 @@ void FluidForces::density_gradients(const K& kernel, const Particles& P, const C
   for (auto& a : grad_rho_) a.assign(n, 0.0);
   double *gx = grad_rho_[0].data(), *gy = grad_rho_[1].data(), *gz = grad_rho_[2].data();
   const Kind* kind = P.kind.data();
+  const IndexRanges water = cells.ranges_of({Kind::Fluid});
 #pragma omp parallel
   {
   Neighbors nb;
@@ -102,7 +103,7 @@ void FluidForces::density_gradients(const K& kernel, const Particles& P, const C
     const double ri = por ? P.rho[i] / por[i] : P.rho[i];
     Eigen::Matrix<double, Dim, Dim> M = Eigen::Matrix<double, Dim, Dim>::Zero();
     Eigen::Matrix<double, Dim, 1> G = Eigen::Matrix<double, Dim, 1>::Zero();
-    cells.gather<Dim>(P, i, nb);
+    cells.gather<Dim>(P, i, nb, water);
     for (std::size_t k = 0; k < nb.size(); ++k) {
       const std::uint32_t j = nb.j[k];
       if (kind[j] != Kind::Fluid) continue;
@@ -178,6 +179,8 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
       return ax * bx + ay * by;
     }
   };
+  // pore water: the pairs with its skeleton are the coupling's (coupling/seepage.hpp), not read here
+  const IndexRanges fluid_and_walls = cells.ranges_of({Kind::Fluid, Kind::DummyWall, Kind::RepulsiveWall});
 #pragma omp parallel
   {
   Neighbors nb;
@@ -195,7 +198,8 @@ void FluidForces::rates_with(const K& kernel, Particles& P, const CellList& cell
     const bool hydrostatic = mi.density_diffusion_hydrostatic;
     const bool free_slip = free_slip_walls_;
     double drho = 0, ax = 0, ay = 0, az = 0;
-    cells.gather<Dim>(P, i, nb);
+    if constexpr (Porous) cells.gather<Dim>(P, i, nb, fluid_and_walls);
+    else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
     const double av_i = alpha_c * h;
     const bool diffusion = delta_hc > 0;

@@ -123,7 +123,20 @@ void Simulation::neighbour_search() {
     throw InstabilityError(d);
   }
   if (current) return;
-  if (reorder) {
+  if (reorder && scene_.two_phase()) {
+    // by cell within each kind, the kinds one after another (skeleton, pore water, the rest): each pair
+    // loop of the coupled step reads only the kinds it needs (CellList::ranges_of), a contiguous part of
+    // each particle's ascending list, where the two overlapping phases would interleave in cell order
+    const std::vector<std::uint32_t>& by_cell = cells_.sorted();
+    const auto group = [&](std::uint32_t i) { return P_.kind[i] == Kind::Soil ? 0 : P_.kind[i] == Kind::Fluid ? 1 : 2; };
+    std::vector<std::uint32_t> order;
+    order.reserve(by_cell.size());
+    for (int g = 0; g < 3; ++g)
+      for (const std::uint32_t i : by_cell)
+        if (group(i) == g) order.push_back(i);
+    P_.permute(order);
+    cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);  // bins the new order (all inside)
+  } else if (reorder) {
     P_.permute(cells_.sorted());
     cells_.mark_permuted();
   }

@@ -126,6 +126,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const Kind* kind = P.kind.data();
   const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
   const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
+  const bool two_phase = scene_.two_phase();  // skip the pore water's part of the lists (continuum_pair)
+  const IndexRanges skeleton_and_walls = cells.ranges_of({Kind::Soil, Kind::DummyWall});
 #pragma omp parallel
   {
   Neighbors nb;
@@ -137,7 +139,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
     const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double drho = 0;
-    cells.gather<Dim>(P, i, nb);
+    if (two_phase && ki == Kind::Soil) cells.gather<Dim>(P, i, nb, skeleton_and_walls);
+    else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
     for (std::size_t k = 0; k < nn; ++k) {
       const std::uint32_t j = nb.j[k];
@@ -331,6 +334,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const double* bt[9] = {};
   if (scene_.kernel_gradient_correction_stress)
     for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
+  const bool two_phase = scene_.two_phase();  // skip the pore water's part of the lists (continuum_pair)
+  const IndexRanges skeleton_and_walls = cells.ranges_of({Kind::Soil, Kind::DummyWall});
 #pragma omp parallel
   {
   Neighbors nb;
@@ -350,7 +355,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     const auto& Si = S[i];
     const auto& Ri = R[i];
     double ax = 0, ay = 0, az = 0;
-    cells.gather<Dim>(P, i, nb);
+    if (two_phase && ki == Kind::Soil) cells.gather<Dim>(P, i, nb, skeleton_and_walls);
+    else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
     for (std::size_t k = 0; k < nn; ++k) {
       const std::uint32_t j = nb.j[k];

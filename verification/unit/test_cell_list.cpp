@@ -278,6 +278,79 @@ TEST(CellList, PairListAcrossPeriodicBoundaries) {
   check_pair_list(box3, 0.09, 800, 24);
 }
 
+namespace {
+
+// A gather restricted to some kinds (ranges_of) returns exactly the full gather's neighbours of those
+// kinds, in its order and with its bits: with the kinds interleaved (loose ranges) and in index blocks
+// (a two-phase reorder, for which rebuild_pairs first puts each list in block order).
+void check_kind_ranges(const Box& box, double radius, int n, unsigned seed, bool blocks) {
+  Particles P = random_particles(box, n, seed);
+  const Kind kinds[3] = {Kind::Soil, Kind::Fluid, Kind::DummyWall};
+  for (std::size_t i = 0; i < P.size(); ++i) P.kind[i] = kinds[(i * 7 + i / 5) % 3];
+  CellList cl;
+  ASSERT_EQ(cl.build(P, box, radius, 0.2 * radius), -1);
+  if (blocks) {
+    std::vector<std::uint32_t> order;
+    for (const Kind k : kinds)
+      for (const std::uint32_t i : cl.sorted())
+        if (P.kind[i] == k) order.push_back(i);
+    P.permute(order);
+    ASSERT_EQ(cl.build(P, box, radius, 0.2 * radius), -1);
+  }
+  cl.rebuild_pairs(P);
+  ASSERT_TRUE(cl.pairs_cached());
+  for (std::size_t i = 0; i + 1 < P.size(); ++i) {  // each list ascending
+    const auto l = cl.listed(i);
+    ASSERT_TRUE(std::is_sorted(l.begin(), l.end())) << "particle " << i;
+  }
+  const std::vector<std::vector<Kind>> sets = {{Kind::Fluid}, {Kind::Soil, Kind::DummyWall}, {Kind::DummyWall, Kind::Fluid},
+                                               {Kind::Soil, Kind::Fluid, Kind::DummyWall}, {Kind::Structure}};
+  Neighbors all, some;
+  std::size_t kept_total = 0, full_total = 0;
+  for (const auto& set : sets) {
+    IndexRanges r;
+    if (set.size() == 1) r = cl.ranges_of({set[0]});
+    else if (set.size() == 2) r = cl.ranges_of({set[0], set[1]});
+    else r = cl.ranges_of({set[0], set[1], set[2]});
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      cl.gather_any_dim(P, i, all);
+      cl.gather_any_dim(P, i, some, r);
+      const auto in_set = [&](std::uint32_t j) { return std::find(set.begin(), set.end(), P.kind[j]) != set.end(); };
+      // the restricted gather may return others of the other kinds (loose ranges), never fewer of these
+      std::vector<std::size_t> a, b;
+      for (std::size_t k = 0; k < all.n; ++k)
+        if (in_set(all.j[k])) a.push_back(k);
+      for (std::size_t k = 0; k < some.n; ++k)
+        if (in_set(some.j[k])) b.push_back(k);
+      ASSERT_EQ(a.size(), b.size()) << "particle " << i;
+      for (std::size_t q = 0; q < a.size(); ++q) {
+        EXPECT_EQ(some.j[b[q]], all.j[a[q]]);
+        EXPECT_EQ(some.dx[b[q]], all.dx[a[q]]);
+        EXPECT_EQ(some.dy[b[q]], all.dy[a[q]]);
+        EXPECT_EQ(some.r2[b[q]], all.r2[a[q]]);
+      }
+      if (blocks) {
+        EXPECT_EQ(b.size(), some.n) << "particle " << i;  // tight ranges: only these kinds
+      }
+      kept_total += some.n;
+      full_total += all.n;
+    }
+  }
+  if (blocks) {
+    EXPECT_LT(kept_total, full_total);  // the blocks let the queries skip the other kinds
+  }
+}
+
+}  // namespace
+
+TEST(CellList, KindRestrictedGatherKeepsTheFullGathersNeighboursOfThoseKinds) {
+  Box box2; box2.dim = 2; box2.lo = {0, 0, 0}; box2.hi = {0.6, 0.4, 0};
+  check_kind_ranges(box2, 0.06, 1200, 31, false);
+  check_kind_ranges(box2, 0.06, 1200, 31, true);
+  Box box3; box3.dim = 3; box3.hi = {0.3, 0.3, 0.3}; box3.periodic = {true, false, true};
+  check_kind_ranges(box3, 0.09, 900, 32, true);
+}
+
 TEST(CellList, NoSkinKeepsNoPairList) {
   Box box; box.dim = 2; box.hi = {1, 1, 1};
   Particles P = random_particles(box, 300, 25);
