@@ -10,6 +10,17 @@
 
 namespace geosph {
 
+namespace {
+// Sorts the first m entries of a (a handful: one per particle kind) ascending by key(entry); std::sort
+// on a fixed-size array gives GCC 12 a false -Warray-bounds.
+template <class T, std::size_t N, class Key>
+void sort_few(std::array<T, N>& a, int m, Key key) {
+  for (int q = 1; q < m; ++q)
+    for (int t = q; t > 0 && key(a[static_cast<std::size_t>(t)]) < key(a[static_cast<std::size_t>(t - 1)]); --t)
+      std::swap(a[static_cast<std::size_t>(t)], a[static_cast<std::size_t>(t - 1)]);
+}
+}  // namespace
+
 long CellList::build(const Particles& P, const Box& box, double radius, double skin) {
   const bool same = box.dim == dim_ && radius == r_ && skin == skin_ && pair_start_.size() == P.size() + 1 &&
                     [&] {
@@ -89,9 +100,7 @@ IndexRanges CellList::ranges_of(std::initializer_list<Kind> kinds) const {
     const auto c = static_cast<std::size_t>(k);
     if (kind_lo_[c] < kind_hi_[c]) r[static_cast<std::size_t>(m++)] = {kind_lo_[c], kind_hi_[c]};
   }
-  for (int q = 1; q < m; ++q)  // by lo (a handful of kinds)
-    for (int t = q; t > 0 && r[static_cast<std::size_t>(t)][0] < r[static_cast<std::size_t>(t - 1)][0]; --t)
-      std::swap(r[static_cast<std::size_t>(t)], r[static_cast<std::size_t>(t - 1)]);
+  sort_few(r, m, [](const std::array<std::uint32_t, 2>& x) { return x[0]; });  // by lo
   for (int q = 0; q < m; ++q) {  // merge overlapping or touching ranges
     const auto& x = r[static_cast<std::size_t>(q)];
     if (out.n > 0 && x[0] <= out.r[static_cast<std::size_t>(out.n - 1)][1])
@@ -152,9 +161,7 @@ void CellList::rebuild_pairs(const Particles& P) {
       if (kind_lo_[k] > 0) cuts[static_cast<std::size_t>(ncut++)] = kind_lo_[k];
     }
   const bool blocks = covered == n && ncut > 0;
-  for (int q = 1; q < ncut; ++q)
-    for (int t = q; t > 0 && cuts[static_cast<std::size_t>(t)] < cuts[static_cast<std::size_t>(t - 1)]; --t)
-      std::swap(cuts[static_cast<std::size_t>(t)], cuts[static_cast<std::size_t>(t - 1)]);
+  sort_few(cuts, ncut, [](std::uint32_t c) { return c; });
   pair_start_.assign(n + 1, 0);
   thread_pairs_.resize(static_cast<std::size_t>(omp_get_max_threads()));
   thread_images_.resize(thread_pairs_.size());

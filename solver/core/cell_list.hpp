@@ -294,7 +294,7 @@ class CellList {
   template <int Dim, bool Periodic>
   void gather_cached_with(const Particles& P, std::size_t i, Neighbors& out, const IndexRanges* only = nullptr) const {
     const std::size_t k0 = pair_start_[i], n = pair_start_[i + 1] - k0;
-    [[maybe_unused]] const GatherPointers ptr(P, out, n);
+    const GatherPointers ptr(P, out, n);
     const std::uint32_t* list = pair_j_.data() + k0;
     if (!only) { out.n = gather_listed<Dim, Periodic>(P, i, ptr, 0, n, 0); return; }
     std::size_t c = 0;

@@ -129,11 +129,11 @@ void Simulation::neighbour_search() {
     // each particle's ascending list, where the two overlapping phases would interleave in cell order
     const std::vector<std::uint32_t>& by_cell = cells_.sorted();
     const auto group = [&](std::uint32_t i) { return P_.kind[i] == Kind::Soil ? 0 : P_.kind[i] == Kind::Fluid ? 1 : 2; };
-    std::vector<std::uint32_t> order;
-    order.reserve(by_cell.size());
-    for (int g = 0; g < 3; ++g)
-      for (const std::uint32_t i : by_cell)
-        if (group(i) == g) order.push_back(i);
+    std::array<std::size_t, 4> at{};  // a stable counting sort on the group
+    for (const std::uint32_t i : by_cell) ++at[static_cast<std::size_t>(group(i)) + 1];
+    at[2] += at[1];
+    std::vector<std::uint32_t> order(by_cell.size());
+    for (const std::uint32_t i : by_cell) order[at[static_cast<std::size_t>(group(i))]++] = i;
     P_.permute(order);
     cells_.build(P_, scene_.domain, scene_.support(), pair_skin_);  // bins the new order (all inside)
   } else if (reorder) {
