@@ -125,3 +125,28 @@ TEST(ToleranceCheck, AToleranceNoMetricReportsFailsTheCase) {
   EXPECT_EQ(none[0].case_name, "synthetic");
   EXPECT_FALSE(none[0].passed());
 }
+
+// Every spacing a case's levels name gives a scene that parses and passes the scene checks (walls
+// inside the domain, bodies clear of the wall layers): a coarse convergence level must not be refused
+// by its own scene. Drivers may edit the scene further; this checks the part every level shares.
+TEST(Catalogue, EveryLevelsSpacingGivesAValidScene) {
+  CaseContext ctx;
+  ctx.data_dir = default_data_dir();
+  int checked = 0;
+  for (const auto& c : discover_cases(ctx.data_dir)) {
+    for (const auto& level : c.levels) {
+      ctx.level = level;
+      const CaseConfig cfg = load_case(ctx, c.name);
+      if (cfg.scene_json.is_null() || !cfg.level.contains("dx")) continue;
+      for (const double dx : cfg.level_numbers("dx")) {
+        try {
+          (void)cfg.scene(dx);
+          ++checked;
+        } catch (const std::exception& e) {
+          ADD_FAILURE() << c.name << ", level " << level << ", dx = " << dx << ": " << e.what();
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 40);
+}
