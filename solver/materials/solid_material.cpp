@@ -22,6 +22,9 @@ const bool documented = register_section(
                  "d for Kozeny-Carman's k (constant 180)"),
       number_doc("artificial_viscosity", Range::between(0, 1), "0.1", "-", "Monaghan alpha (Bui et al. 2008)"),
       number_doc("artificial_viscosity_beta", Range::between(0, 2), "0", "-", "Monaghan beta"),
+      choice_doc("artificial_viscosity_switch", {"none", "balsara"}, "none",
+                 "balsara: the viscosity scaled by f = abs(div v) / (abs(div v) + abs(curl v) + 1e-4 c/h) "
+                 "(Balsara 1995), on in compression, off in shear flow"),
       {"artificial_stress", FieldType::Object, "see materials.artificial_stress", "off", "-",
        "tensile-instability correction (Gray, Monaghan & Swift 2001)"}}});
 const bool documented_as = register_section(
@@ -76,6 +79,7 @@ SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, 
   }
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
   m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
+  m.artificial_viscosity_balsara = f.choice("artificial_viscosity_switch", {"none", "balsara"}, "none") == "balsara";
   if (auto a = f.optional_object("artificial_stress")) {
     a->section("materials.artificial_stress");
     m.artificial_stress = a->number("epsilon", Range::between(0, 1));

@@ -1,5 +1,6 @@
 #include "soil/soil_forces.hpp"
 #include "soil/soil_mirror_images.hpp"
+#include "soil/viscosity_switch.hpp"
 
 #include <Eigen/Dense>
 
@@ -47,6 +48,7 @@ SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
     wave_speed_.push_back(m.wave_speed());
     if (m.pressure_dependent()) has_pressure_dependent_ = true;
     else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
+    if (m.artificial_viscosity_balsara) has_viscosity_switch_ = true;
     std::visit([&](const auto& model) {
       for (const char* f : model.state_fields) state_fields_.insert(f);
       if constexpr (requires { model.elastic; }) hooke_.push_back(materials::LinearElastic::with(model.elastic));
@@ -65,6 +67,10 @@ void SoilForces::allocate(Particles& P) const {
   if (has_pressure_dependent_) {
     P.add_field(SoilFields::wave_speed, SoilFields::owner);
     update_wave_speeds(P);
+  }
+  if (has_viscosity_switch_ && !P.has_field(SoilFields::viscosity_switch)) {  // a restart keeps its values
+    auto& f = P.add_field(SoilFields::viscosity_switch, SoilFields::owner);
+    std::fill(f.begin(), f.end(), 1.0);
   }
 }
 
@@ -128,6 +134,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   const double *gvx = ghost_vx_.data(), *gvy = ghost_vy_.data(), *gvz = ghost_vz_.data();
   const bool two_phase = scene_.two_phase();  // skip the pore water's part of the lists (continuum_pair)
   const IndexRanges skeleton_and_walls = cells.ranges_of({Kind::Soil, Kind::DummyWall});
+  double* sw = has_viscosity_switch_ ? P.field(SoilFields::viscosity_switch).data() : nullptr;
+  const double* cw_now = has_pressure_dependent_ ? P.field(SoilFields::wave_speed).data() : nullptr;
+  const double h = scene_.h();
 #pragma omp parallel
   {
   Neighbors nb;
@@ -201,6 +210,12 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       }
     }
     P.drho[i] = drho;
+    if (sw) {  // Balsara's switch from this velocity gradient
+      if (scene_.soils[P.material[i]].artificial_viscosity_balsara)
+        sw[i] = balsara_switch(L, cw_now ? cw_now[i] : wave_speed_[P.material[i]], h);
+      else
+        sw[i] = 1.0;
+    }
     Eigen::Matrix3d de, dw;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
@@ -336,6 +351,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
   const bool two_phase = scene_.two_phase();  // skip the pore water's part of the lists (continuum_pair)
   const IndexRanges skeleton_and_walls = cells.ranges_of({Kind::Soil, Kind::DummyWall});
+  const double* sw = has_viscosity_switch_ ? P.field(SoilFields::viscosity_switch).data() : nullptr;
 #pragma omp parallel
   {
   Neighbors nb;
@@ -388,7 +404,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         // Pi = (-alpha c mu + beta mu^2) / rho_ij, mu = h v.r / d, d = r^2 + eta^2, as one division
         const double d = r2 + eta2, hvr = h * vr;
         const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
-        const double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        if (sw) Pi *= 0.5 * (sw[i] + (wall ? sw[i] : sw[j]));  // a wall pair: i's own switch
         Txx -= Pi; Tyy -= Pi;
         if constexpr (Dim == 3) Tzz -= Pi;
       }
@@ -459,7 +476,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         const double vr = std::min(u[0] * r[0] + u[1] * r[1] + u[2] * r[2], 0.0);
         const double d = rr * rr + eta2, hvr = h * vr;
         const double cij = cw ? 0.5 * (ci + cw[j]) : ci;
-        const double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        if (sw) Pi *= 0.5 * (sw[i] + sw[j]);
         Tm[0] -= Pi; Tm[1] -= Pi; Tm[2] -= Pi;
         ax += mj * (Tm[0] * grad[0] + Tm[3] * grad[1] + Tm[4] * grad[2]);
         ay += mj * (Tm[3] * grad[0] + Tm[1] * grad[1] + Tm[5] * grad[2]);

@@ -13,6 +13,9 @@
 //                      corrected gradient on each side (numerics.kernel_gradient_correction_stress)
 //   artificial viscosity Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
 //                                                                                  (Monaghan 1992, eq. 4.2)
+//                      optionally scaled by (f_i + f_j)/2, f = |div v| / (|div v| + |curl v| + 1e-4 c/h)
+//                      from the velocity gradient L (Balsara 1995, J. Comput. Phys. 121, 357-372, eq. 4.1;
+//                      materials.artificial_viscosity_switch): on in compression, off in shear flow
 //                      c_ij = (c_i + c_j)/2, the local P-wave speeds (constant for Drucker-Prager;
 //                      growing with p' for Modified Cam Clay)
 //   artificial stress  R = -epsilon sigma'_aa / rho^2 on tensile principal stresses, rotated back;
@@ -78,6 +81,7 @@ class SoilForces {
   std::set<std::string> state_fields_;  // the models' state fields (materials/solid_model.hpp)
   std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
+  bool has_viscosity_switch_ = false;   // a material with Balsara's switch (field SoilFields::viscosity_switch)
   mutable double max_wave_speed_ = 0;
   mutable bool elastic_only_ = false;
   // per material: Hooke's law with its own constants, for the elastic mode (models with constant moduli)

@@ -163,6 +163,12 @@ void check_restart_and_threads(const json& scene, long every, long stop) {
 
 TEST(Restart, FluidContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(fluid_scene(), 100, 170); }
 TEST(Restart, SoilContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(soil_scene(), 100, 170); }
+TEST(Restart, SoilWithViscositySwitchContinuesBitwise) {  // the switch's field is carried by the checkpoint
+  json j = soil_scene();
+  j["name"] = "restart_soil_switch";
+  j["materials"]["sand"]["artificial_viscosity_switch"] = "balsara";
+  check_restart_and_threads(j, 100, 170);
+}
 TEST(Restart, TwoPhaseContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(two_phase_scene(), 100, 170); }
 TEST(Restart, StructureContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(structure_scene(), 100, 170); }
 

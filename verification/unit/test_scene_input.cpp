@@ -174,6 +174,9 @@ TEST(SceneInput, SoilMaterialRanges) {
   j = soil_scene();
   j["walls"]["type"] = "repulsive";
   expect_error(j, "walls.type", "soil needs dummy, ghost or mirror walls");
+  j = soil_scene();
+  j["materials"]["sand"]["artificial_viscosity_switch"] = "monaghan";
+  expect_error(j, "materials.sand.artificial_viscosity_switch", "balsara");
 }
 
 // Modified Cam Clay: lambda <= kappa, non-positive M, p' <= 0 at start.
