@@ -43,7 +43,8 @@ struct CubicSpline {
     if (q < 1.0) return sigma * inv_h * inv_h * (-3.0 + 2.25 * q);
     if (q < 2.0) { const double t = 2.0 - q; return -sigma * inv_h * 0.75 * t * t / r; }
     return 0.0;
-  }
+  }  double W_inside(double r) const { return W(r); }  // piecewise: no branch-free form
+  double gradW_over_r_inside(double r) const { return gradW_over_r(r); }
 };
 
 struct WendlandC2 {
@@ -55,8 +56,7 @@ struct WendlandC2 {
   double W(double r) const {
     const double q = r * inv_h;
     if (q >= 2.0) return 0.0;
-    const double t = 1.0 - 0.5 * q, t2 = t * t;
-    return sigma * t2 * t2 * (2.0 * q + 1.0);
+    return W_inside(r);
   }
   double dWdr(double r) const {  // d/dq [(1-q/2)^4 (2q+1)] = -5 q (1-q/2)^3
     const double q = r * inv_h;
@@ -67,6 +67,17 @@ struct WendlandC2 {
   double gradW_over_r(double r) const {
     const double q = r * inv_h;
     if (q >= 2.0) return 0.0;
+    return gradW_over_r_inside(r);
+  }
+  // W and gradW_over_r for r inside the support (a gathered neighbour): the same values without the
+  // support test, so that a pair loop over gathered neighbours vectorises
+  double W_inside(double r) const {
+    const double q = r * inv_h;
+    const double t = 1.0 - 0.5 * q, t2 = t * t;
+    return sigma * t2 * t2 * (2.0 * q + 1.0);
+  }
+  double gradW_over_r_inside(double r) const {
+    const double q = r * inv_h;
     const double t = 1.0 - 0.5 * q;
     return -5.0 * sigma * inv_h * inv_h * t * t * t;
   }
@@ -97,6 +108,8 @@ struct QuinticSpline {
     return sigma * inv_h * d;
   }
   double gradW_over_r(double r) const { return r > 0 ? dWdr(r) / r : 0.0; }
+  double W_inside(double r) const { return W(r); }  // piecewise: no branch-free form
+  double gradW_over_r_inside(double r) const { return gradW_over_r(r); }
 };
 
 using AnyKernel = std::variant<CubicSpline, WendlandC2, QuinticSpline>;

@@ -1,4 +1,5 @@
 #include "soil/soil_forces.hpp"
+#include "core/pair_columns.hpp"
 #include "soil/soil_mirror_images.hpp"
 #include "soil/viscosity_switch.hpp"
 
@@ -39,6 +40,8 @@ struct StressView {
 inline bool continuum_pair(Kind ki, Kind kj) {
   return ki == Kind::Soil ? (kj == Kind::Soil || kj == Kind::DummyWall) : kj == Kind::Structure;
 }
+
+constexpr int kMomentumColumns = 32;  // momentum_with's PairColumns
 
 }  // namespace
 
@@ -141,6 +144,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   {
   Neighbors nb;
   MirrorSet images;
+  PairColumns cols;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
@@ -151,12 +155,21 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
     if (two_phase && ki == Kind::Soil) cells.gather<Dim>(P, i, nb, skeleton_and_walls);
     else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
+    // the kernel gradients first, in a loop that vectorises (core/pair_columns.hpp); the sums below are
+    // cheap per pair and stay scalar (as columns they were slower: their gathering cost more than it saved)
+    cols.reserve(nn, 1);
+    double* __restrict fws = cols.col(0);
+    {
+      const double* __restrict nr2 = nb.r2.data();
+#pragma omp simd
+      for (std::size_t k = 0; k < nn; ++k) fws[k] = kernel.gradW_over_r_inside(std::sqrt(nr2[k]));
+    }
     for (std::size_t k = 0; k < nn; ++k) {
       const std::uint32_t j = nb.j[k];
       const Kind kj = kind[j];
       if (!continuum_pair(ki, kj)) continue;
       const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0;
-      const double fw = kernel.gradW_over_r(std::sqrt(nb.r2[k]));
+      const double fw = fws[k];
       const double grad[3] = {fw * dx, fw * dy, fw * dz};
       const double mj = mass[j], Vj = vol[j];
       // continuity with the wall's own (prescribed) velocity
@@ -197,7 +210,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) { Bm(a, b) = B[a][b]; Lm(a, b) = L[a][b]; }
       bool invertible = false;
-      Eigen::Matrix3d Binv;
+      Eigen::Matrix3d Binv = Eigen::Matrix3d::Identity();  // set by the check where B is invertible
       double det = 0;
       Bm.computeInverseAndDetWithCheck(Binv, det, invertible, 1e-3);
       if (bt[0])
@@ -356,6 +369,8 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   {
   Neighbors nb;
   MirrorSet images;
+  PairColumns cols;
+  std::vector<double> ones;
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
@@ -374,84 +389,157 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
     if (two_phase && ki == Kind::Soil) cells.gather<Dim>(P, i, nb, skeleton_and_walls);
     else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
+    cols.reserve(nn, kMomentumColumns);
+    // 1. the neighbours' values into columns (the scattered reads, once); a pair outside the continuum
+    //    gets zero mass, stress and velocity, so that its term below is zero
+    double* __restrict m = cols.col(0);
+    double* __restrict rho = cols.col(1);
+    double* __restrict sj[6] = {cols.col(2), cols.col(3), cols.col(4), cols.col(5), cols.col(6), cols.col(7)};
+    double* __restrict u[3] = {cols.col(8), cols.col(9), cols.col(10)};
+    double* __restrict cij = cols.col(11);
+    double* __restrict swij = cols.col(12);
+    double* __restrict rsum[6] = {cols.col(13), cols.col(14), cols.col(15), cols.col(16), cols.col(17), cols.col(18)};
+    double* __restrict fas = cols.col(19);
+    double* __restrict bj[9] = {cols.col(20), cols.col(21), cols.col(22), cols.col(23), cols.col(24),
+                                cols.col(25), cols.col(26), cols.col(27), cols.col(28)};
+    double* __restrict out[3] = {cols.col(29), cols.col(30), cols.col(31)};
+    const double swi = sw ? sw[i] : 1.0;
     for (std::size_t k = 0; k < nn; ++k) {
       const std::uint32_t j = nb.j[k];
-      const Kind kj = kind[j];
-      if (!continuum_pair(ki, kj)) continue;
-      const double dx = nb.dx[k], dy = nb.dy[k], dz = Dim == 3 ? nb.dz[k] : 0.0, r2 = nb.r2[k];
-      const double r = std::sqrt(r2);
-      const double fw = kernel.gradW_over_r(r);
-      const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
-      const bool wall = kj == Kind::DummyWall;
-      const double mj = mass[j], rhoj = dens[j];
+      const bool keep = continuum_pair(ki, kind[j]);
+      m[k] = keep ? mass[j] : 0.0;
+      rho[k] = keep ? dens[j] : rhoi;
       const auto& Sj = S[j];
-      // T = S_i + S_j (+ artificial stress) as named scalars, so that they stay in registers
-      double Txx = Si[0] + Sj[0], Tyy = Si[1] + Sj[1], Txy = Si[3] + Sj[3], Tzz = 0, Txz = 0, Tyz = 0;
-      if constexpr (Dim == 3) { Tzz = Si[2] + Sj[2]; Txz = Si[4] + Sj[4]; Tyz = Si[5] + Sj[5]; }
-      if (use_as && (tension_i | tension[j])) {  // R_i + R_j = 0 for a pair with neither in tension
-        const double ratio = kernel.W(r) / w_dx;
-        const double f = n_is_4 ? (ratio * ratio) * (ratio * ratio) : std::pow(ratio, n_as);
-        const auto& Rj = R[j];
-        Txx += f * (Ri[0] + Rj[0]); Tyy += f * (Ri[1] + Rj[1]); Txy += f * (Ri[3] + Rj[3]);
-        if constexpr (Dim == 3) { Tzz += f * (Ri[2] + Rj[2]); Txz += f * (Ri[4] + Rj[4]); Tyz += f * (Ri[5] + Rj[5]); }
+      sj[0][k] = keep ? Sj[0] : 0.0; sj[1][k] = keep ? Sj[1] : 0.0; sj[3][k] = keep ? Sj[3] : 0.0;
+      if constexpr (Dim == 3) { sj[2][k] = keep ? Sj[2] : 0.0; sj[4][k] = keep ? Sj[4] : 0.0; sj[5][k] = keep ? Sj[5] : 0.0; }
+      u[0][k] = keep ? vxi - gvx[j] : 0.0;  // walls with the soil's ghost velocity
+      u[1][k] = keep ? vyi - gvy[j] : 0.0;
+      if constexpr (Dim == 3) u[2][k] = keep ? vzi - gvz[j] : 0.0;
+    }
+    // the optional terms' columns; without them the pair terms read ones (an exact factor 1)
+    if (ones.size() < nn) ones.resize(nn, 1.0);
+    const double* cc = ones.data();
+    double cs = ci;  // c_ij = cs * cc[k]
+    if (cw) {
+      for (std::size_t k = 0; k < nn; ++k) {
+        const std::uint32_t j = nb.j[k];
+        const Kind kj = kind[j];
+        cij[k] = continuum_pair(ki, kj) && kj != Kind::DummyWall ? 0.5 * (ci + cw[j]) : ci;
       }
-      {
-        // Monaghan's artificial viscosity for approaching pairs, as a select (the sign of v.r is a coin
-        // flip, a branch on it was mispredicted half the time); walls with the soil's ghost velocity
-        const double ux = vxi - gvx[j], uy = vyi - gvy[j];
-        const double uz = Dim == 3 ? vzi - gvz[j] : 0.0;
+      cc = cij;
+      cs = 1.0;
+    }
+    const double* swp = ones.data();
+    if (sw) {
+      for (std::size_t k = 0; k < nn; ++k) {
+        const std::uint32_t j = nb.j[k];
+        const Kind kj = kind[j];  // a wall pair: i's own switch
+        swij[k] = 0.5 * (swi + (kj == Kind::DummyWall || !continuum_pair(ki, kj) ? swi : sw[j]));
+      }
+      swp = swij;
+    }
+    if (use_as)
+      for (std::size_t k = 0; k < nn; ++k) {  // R_i + R_j = 0 for a pair with neither in tension
+        const std::uint32_t j = nb.j[k];
+        const bool t = continuum_pair(ki, kind[j]) && (tension_i | tension[j]);
+        for (int c = 0; c < 6; ++c) rsum[c][k] = t ? Ri[c] + R[j][c] : 0.0;
+        if (!n_is_4) fas[k] = std::pow(kernel.W(std::sqrt(nb.r2[k])) / w_dx, n_as);
+      }
+    if (bt[0])
+      for (std::size_t k = 0; k < nn; ++k) {
+        const std::uint32_t j = nb.j[k];
+        const bool keep = continuum_pair(ki, kind[j]);
+        for (int c = 0; c < 9; ++c) bj[c][k] = keep ? bt[c][j] : 0.0;
+      }
+    // 2. the pair terms over the columns
+    const auto pair_terms = [&]<bool AS, bool Corr>() {
+      const double* __restrict ndx = nb.dx.data();
+      const double* __restrict ndy = nb.dy.data();
+      const double* __restrict ndz = Dim == 3 ? nb.dz.data() : nb.dx.data();
+      const double* __restrict nr2 = nb.r2.data();
+      double bti[9] = {};  // B_i^-T - I
+      if constexpr (Corr)
+        for (int c = 0; c < 9; ++c) bti[c] = bt[c][i];
+      const double Ixx = Si[0], Iyy = Si[1], Izz = Si[2], Ixy = Si[3], Ixz = Si[4], Iyz = Si[5];
+#pragma omp simd
+      for (std::size_t k = 0; k < nn; ++k) {
+        const double dx = ndx[k], dy = ndy[k], dz = Dim == 3 ? ndz[k] : 0.0, r2 = nr2[k];
+        const double r = std::sqrt(r2);
+        const double fw = kernel.gradW_over_r_inside(r);
+        const double gx = fw * dx, gy = fw * dy, gz = fw * dz;
+        const double mj = m[k];
+        const double Jxx = sj[0][k], Jyy = sj[1][k], Jxy = sj[3][k];
+        const double Jzz = Dim == 3 ? sj[2][k] : 0.0, Jxz = Dim == 3 ? sj[4][k] : 0.0, Jyz = Dim == 3 ? sj[5][k] : 0.0;
+        // T = S_i + S_j (+ artificial stress) - Pi I
+        double Txx = Ixx + Jxx, Tyy = Iyy + Jyy, Txy = Ixy + Jxy, Tzz = 0, Txz = 0, Tyz = 0;
+        if constexpr (Dim == 3) { Tzz = Izz + Jzz; Txz = Ixz + Jxz; Tyz = Iyz + Jyz; }
+        if constexpr (AS) {
+          double f;
+          if (n_is_4) {
+            const double ratio = kernel.W_inside(r) / w_dx;
+            f = (ratio * ratio) * (ratio * ratio);
+          } else {
+            f = fas[k];
+          }
+          Txx += f * rsum[0][k]; Tyy += f * rsum[1][k]; Txy += f * rsum[3][k];
+          if constexpr (Dim == 3) { Tzz += f * rsum[2][k]; Txz += f * rsum[4][k]; Tyz += f * rsum[5][k]; }
+        }
+        // Monaghan's artificial viscosity for approaching pairs: Pi = (-alpha c mu + beta mu^2) / rho_ij,
+        // mu = h v.r / d, d = r^2 + eta^2, as one division
+        const double ux = u[0][k], uy = u[1][k], uz = Dim == 3 ? u[2][k] : 0.0;
         const double vr = std::min(Dim == 3 ? ux * dx + uy * dy + uz * dz : ux * dx + uy * dy, 0.0);
-        // Pi = (-alpha c mu + beta mu^2) / rho_ij, mu = h v.r / d, d = r^2 + eta^2, as one division
         const double d = r2 + eta2, hvr = h * vr;
-        const double cij = cw && !wall ? 0.5 * (ci + cw[j]) : ci;
-        double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
-        if (sw) Pi *= 0.5 * (sw[i] + (wall ? sw[i] : sw[j]));  // a wall pair: i's own switch
+        const double c = cs * cc[k];
+        double Pi = hvr * (beta * hvr - alpha * c * d) / (0.5 * d * d * (rhoi + rho[k]));
+        Pi *= swp[k];
         Txx -= Pi; Tyy -= Pi;
         if constexpr (Dim == 3) Tzz -= Pi;
-      }
-      if (bt[0]) {
-        // (S_i B_i^-T + S_j B_j^-T) . grad W: the stresses with the corrected gradients (Bonet & Lok 1999,
-        // eq. 22, on each side; antisymmetric in the pair, so linear momentum is kept); viscosity and
-        // artificial stress with the plain gradient
-        const double g0[3] = {gx, gy, gz};
-        double gi[3], gj[3];
-        for (int a = 0; a < 3; ++a) {
-          gi[a] = g0[a];
-          gj[a] = g0[a];
-          for (int b = 0; b < Dim; ++b) {
-            gi[a] += bt[3 * a + b][i] * g0[b];
-            gj[a] += bt[3 * a + b][j] * g0[b];
+        if constexpr (Corr) {
+          // (S_i B_i^-T + S_j B_j^-T) . grad W: the stresses with the corrected gradients (Bonet & Lok 1999,
+          // eq. 22, on each side; antisymmetric in the pair, so linear momentum is kept); viscosity and
+          // artificial stress with the plain gradient
+          const double g0[3] = {gx, gy, gz};
+          double gi[3], gj[3];
+          for (int a = 0; a < 3; ++a) {
+            gi[a] = g0[a];
+            gj[a] = g0[a];
+            for (int b = 0; b < Dim; ++b) {
+              gi[a] += bti[3 * a + b] * g0[b];
+              gj[a] += bj[3 * a + b][k] * g0[b];
+            }
           }
-        }
-        const double Ixx = Si[0], Iyy = Si[1], Izz = Si[2], Ixy = Si[3], Ixz = Si[4], Iyz = Si[5];
-        const double Jxx = Sj[0], Jyy = Sj[1], Jzz = Sj[2], Jxy = Sj[3], Jxz = Sj[4], Jyz = Sj[5];
-        // the rest of T (viscosity, artificial stress)
-        const double rxx = Txx - Ixx - Jxx, ryy = Tyy - Iyy - Jyy, rxy = Txy - Ixy - Jxy;
-        if constexpr (Dim == 3) {
-          const double rzz = Tzz - Izz - Jzz, rxz = Txz - Ixz - Jxz, ryz = Tyz - Iyz - Jyz;
-          ax += mj * (Ixx * gi[0] + Ixy * gi[1] + Ixz * gi[2] + Jxx * gj[0] + Jxy * gj[1] + Jxz * gj[2] +
-                      rxx * gx + rxy * gy + rxz * gz);
-          ay += mj * (Ixy * gi[0] + Iyy * gi[1] + Iyz * gi[2] + Jxy * gj[0] + Jyy * gj[1] + Jyz * gj[2] +
-                      rxy * gx + ryy * gy + ryz * gz);
-          az += mj * (Ixz * gi[0] + Iyz * gi[1] + Izz * gi[2] + Jxz * gj[0] + Jyz * gj[1] + Jzz * gj[2] +
-                      rxz * gx + ryz * gy + rzz * gz);
+          const double rxx = Txx - Ixx - Jxx, ryy = Tyy - Iyy - Jyy, rxy = Txy - Ixy - Jxy;  // the rest of T
+          if constexpr (Dim == 3) {
+            const double rzz = Tzz - Izz - Jzz, rxz = Txz - Ixz - Jxz, ryz = Tyz - Iyz - Jyz;
+            out[0][k] = mj * (Ixx * gi[0] + Ixy * gi[1] + Ixz * gi[2] + Jxx * gj[0] + Jxy * gj[1] + Jxz * gj[2] +
+                              rxx * gx + rxy * gy + rxz * gz);
+            out[1][k] = mj * (Ixy * gi[0] + Iyy * gi[1] + Iyz * gi[2] + Jxy * gj[0] + Jyy * gj[1] + Jyz * gj[2] +
+                              rxy * gx + ryy * gy + ryz * gz);
+            out[2][k] = mj * (Ixz * gi[0] + Iyz * gi[1] + Izz * gi[2] + Jxz * gj[0] + Jyz * gj[1] + Jzz * gj[2] +
+                              rxz * gx + ryz * gy + rzz * gz);
+          } else {
+            out[0][k] = mj * (Ixx * gi[0] + Ixy * gi[1] + Jxx * gj[0] + Jxy * gj[1] + rxx * gx + rxy * gy);
+            out[1][k] = mj * (Ixy * gi[0] + Iyy * gi[1] + Jxy * gj[0] + Jyy * gj[1] + rxy * gx + ryy * gy);
+          }
+        } else if constexpr (Dim == 3) {  // (T . grad W)_a with T symmetric
+          out[0][k] = mj * (Txx * gx + Txy * gy + Txz * gz);
+          out[1][k] = mj * (Txy * gx + Tyy * gy + Tyz * gz);
+          out[2][k] = mj * (Txz * gx + Tyz * gy + Tzz * gz);
         } else {
-          (void)Izz; (void)Jzz; (void)Ixz; (void)Iyz; (void)Jxz; (void)Jyz;
-          ax += mj * (Ixx * gi[0] + Ixy * gi[1] + Jxx * gj[0] + Jxy * gj[1] + rxx * gx + rxy * gy);
-          ay += mj * (Ixy * gi[0] + Iyy * gi[1] + Jxy * gj[0] + Jyy * gj[1] + rxy * gx + ryy * gy);
+          out[0][k] = mj * (Txx * gx + Txy * gy);
+          out[1][k] = mj * (Txy * gx + Tyy * gy);
         }
-        continue;
       }
-      // (T . grad W)_a with T symmetric
-      if constexpr (Dim == 3) {
-        ax += mj * (Txx * gx + Txy * gy + Txz * gz);
-        ay += mj * (Txy * gx + Tyy * gy + Tyz * gz);
-        az += mj * (Txz * gx + Tyz * gy + Tzz * gz);
-      } else {
-        (void)gz; (void)Tzz; (void)Txz; (void)Tyz;
-        ax += mj * (Txx * gx + Txy * gy);
-        ay += mj * (Txy * gx + Tyy * gy);
-      }
+    };
+    if (use_as && bt[0]) pair_terms.template operator()<true, true>();
+    else if (use_as) pair_terms.template operator()<true, false>();
+    else if (bt[0]) pair_terms.template operator()<false, true>();
+    else pair_terms.template operator()<false, false>();
+    // 3. the sums, in neighbour order
+    for (std::size_t k = 0; k < nn; ++k) {
+      ax += out[0][k];
+      ay += out[1][k];
+      if constexpr (Dim == 3) az += out[2][k];
     }
     if (mirror_ && ki == Kind::Soil)  // mirror walls: the images' stress, artificial stress and viscosity
       for_each_soil_image(*mirror_, images, P, cells, i, 0.5 * scene_.dx, [&](const MirrorImage& M, std::uint32_t j, const std::array<double, 3>& r,
