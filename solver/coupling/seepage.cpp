@@ -2,6 +2,8 @@
 
 #include "boundary/body_fields.hpp"
 #include "boundary/soil_wall.hpp"
+#include "core/kernel_columns.hpp"
+#include "core/pair_columns.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -123,6 +125,7 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
 #pragma omp parallel
   {
   Neighbors nb;
+  PairColumns cols;  // the kernel's values of each particle's neighbours (core/kernel_columns.hpp)
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = P.kind[i];
@@ -130,18 +133,21 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
     const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
     double sum = 0, sg = 0, g[3] = {0, 0, 0}, gn[3] = {0, 0, 0};
     cells.gather_any_dim(P, i, nb, ki == Kind::Soil ? for_soil : for_water);
+    cols.reserve(nb.n, 2);
+    double *Wq = cols.col(0), *fwq = cols.col(1);
+    kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
-      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q];
       const Kind kj = P.kind[j];
       if (ki == Kind::Fluid && kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
-        const double c = vol[j] * (por[j] - por[i]) * kernel.gradW_over_r(std::sqrt(r2));
+        const double c = vol[j] * (por[j] - por[i]) * fwq[q];
         gn[0] += c * dx; gn[1] += c * dy; gn[2] += c * dz;
       }
       const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
       if (kj != other && !skeleton) continue;
       const double Vj = skeleton && swm ? swm[j] / swrho[j] : vol[j];
-      const double r = std::sqrt(r2), fw = kernel.gradW_over_r(r), W = kernel.W(r);
+      const double fw = fwq[q], W = Wq[q];
       if (kj == other) sum += Vj * W;
       if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
     }
@@ -191,24 +197,28 @@ void Seepage::porosity_rate_with(const K& kernel, Particles& P, const CellList& 
 #pragma omp parallel
   {
   Neighbors nb;
+  PairColumns cols;  // the kernel's values of each particle's neighbours (core/kernel_columns.hpp)
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
     double sW = 0, sv[3] = {0, 0, 0}, dv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, g[3] = {0, 0, 0};
     double gn[3] = {0, 0, 0};
     cells.gather_any_dim(P, i, nb);
+    cols.reserve(nb.n, 2);
+    double *Wq = cols.col(0), *fwq = cols.col(1);
+    kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
-      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q];
       const Kind kj = P.kind[j];
       if (kj != Kind::Soil && kj != Kind::Fluid && kj != Kind::DummyWall) continue;  // walls: skeleton at rest
-      const double r = std::sqrt(r2), Vj = vol[j], fw = kernel.gradW_over_r(r);
+      const double Vj = vol[j], fw = fwq[q];
       const double gr[3] = {fw * dx, fw * dy, fw * dz};
       if (kj == Kind::Fluid) {
         for (int a = 0; a < 3; ++a) gn[a] += Vj * (por[j] - por[i]) * gr[a];
         continue;
       }
-      const double W = kernel.W(r), v[3] = {P.vx[j], P.vy[j], P.vz[j]};
+      const double W = Wq[q], v[3] = {P.vx[j], P.vy[j], P.vz[j]};
       sW += Vj * W;
       for (int a = 0; a < 3; ++a) {
         sv[a] += Vj * v[a] * W;
@@ -321,6 +331,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
 #pragma omp parallel
   {
   Neighbors nb;
+  PairColumns cols;  // the kernel's values of each particle's neighbours (core/kernel_columns.hpp)
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     C[i] = 0;
@@ -329,12 +340,15 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
     const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
     DragSums drag;
     cells.gather_any_dim(P, i, nb, water_and_walls);
+    cols.reserve(nb.n, 2);
+    double *Wq = cols.col(0), *fwq = cols.col(1);
+    kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
-      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q], r2 = nb.r2[q];
+      const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q];
       const Kind kj = P.kind[j];
       if (kj != Kind::Fluid && kj != Kind::DummyWall) continue;
-      const double r = std::sqrt(r2), Vj = vol[j], W = kernel.W(r), fw = kernel.gradW_over_r(r);
+      const double Vj = vol[j], W = Wq[q], fw = fwq[q];
       const double w_over_s = kj == Kind::Fluid && Sg[j] > 0 ? W / Sg[j] : 0.0;  // walls: no porosity rate
       const double phi = Vj * (1.0 - por[j]), vn = kj == Kind::Fluid ? Vj * w_over_s : 0.0;
       const double b[3] = {phi * (fw * dx + w_over_s * G[0][j]) + vn * GN[0][j],
@@ -359,16 +373,20 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
 #pragma omp parallel
   {
   Neighbors nb;
+  PairColumns cols;  // the kernel's values of each particle's neighbours (core/kernel_columns.hpp)
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Fluid) continue;
     const double rhoi = P.rho[i], Si = S[i];
     DragSums drag;
     cells.gather_any_dim(P, i, nb, skeleton);
+    cols.reserve(nb.n, 2);
+    double *Wq = cols.col(0), *fwq = cols.col(1);
+    kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
       if (!(bs[j] > 0)) continue;  // saturated skeleton partners only
-      add_drag(drag, j, bs[j], kernel.W(std::sqrt(nb.r2[q])), Si, rhoi);
+      add_drag(drag, j, bs[j], Wq[q], Si, rhoi);
     }
     store_drag(i, drag);
   }

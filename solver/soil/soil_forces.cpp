@@ -1,4 +1,5 @@
 #include "soil/soil_forces.hpp"
+#include "core/kernel_columns.hpp"
 #include "core/pair_columns.hpp"
 #include "soil/soil_mirror_images.hpp"
 #include "soil/viscosity_switch.hpp"
@@ -155,15 +156,11 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
     if (two_phase && ki == Kind::Soil) cells.gather<Dim>(P, i, nb, skeleton_and_walls);
     else cells.gather<Dim>(P, i, nb);
     const std::size_t nn = nb.size();
-    // the kernel gradients first, in a loop that vectorises (core/pair_columns.hpp); the sums below are
+    // the kernel gradients first, in a loop that vectorises (core/kernel_columns.hpp); the sums below are
     // cheap per pair and stay scalar (as columns they were slower: their gathering cost more than it saved)
     cols.reserve(nn, 1);
-    double* __restrict fws = cols.col(0);
-    {
-      const double* __restrict nr2 = nb.r2.data();
-#pragma omp simd
-      for (std::size_t k = 0; k < nn; ++k) fws[k] = kernel.gradW_over_r_inside(std::sqrt(nr2[k]));
-    }
+    double* fws = cols.col(0);
+    kernel_gradients(kernel, nb.r2.data(), nn, fws);
     for (std::size_t k = 0; k < nn; ++k) {
       const std::uint32_t j = nb.j[k];
       const Kind kj = kind[j];
