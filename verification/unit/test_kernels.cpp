@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/kernel_columns.hpp"
 #include "core/kernels.hpp"
 
 using namespace geosph;
@@ -127,6 +128,32 @@ TEST_P(KernelTest, LatticeMoments) {
   EXPECT_LT(e_wide, 0.5 * e_default) << kernel_name(type);
   std::printf("%s %dD: lattice moment error %.2e at h/dx = %.1f, %.2e at h/dx = 2\n", kernel_name(type).c_str(), dim,
               e_default, default_h_over_dx(type), e_wide);
+}
+
+// The columns of a gathered neighbour list (core/kernel_columns.hpp) hold the kernel's own values, bit for
+// bit, at every distance inside the support: the pair loops that read them give the scalar loops' results.
+TEST_P(KernelTest, ColumnsEqualTheKernelInsideTheSupport) {
+  const auto [type, dim] = GetParam();
+  const double h = 0.013;
+  const AnyKernel any = make_kernel(type, dim, h);
+  std::visit([&](const auto& k) {
+    const double support = k.kappa * h;
+    std::vector<double> r2;
+    for (int s = 0; s < 997; ++s) {  // includes r = 0 and distances just inside the support
+      const double r = support * (1.0 - std::pow(0.5, 40.0 * s / 996.0)) * (s == 996 ? 1.0 - 1e-15 : 1.0);
+      r2.push_back(s == 0 ? 0.0 : r * r);
+    }
+    std::vector<double> w(r2.size()), fw(r2.size()), fw_only(r2.size());
+    kernel_values_and_gradients(k, r2.data(), r2.size(), w.data(), fw.data());
+    kernel_gradients(k, r2.data(), r2.size(), fw_only.data());
+    for (std::size_t q = 0; q < r2.size(); ++q) {
+      const double r = std::sqrt(r2[q]);
+      ASSERT_LT(r, support);
+      EXPECT_EQ(w[q], k.W(r)) << "r = " << r;
+      EXPECT_EQ(fw[q], k.gradW_over_r(r)) << "r = " << r;
+      EXPECT_EQ(fw_only[q], k.gradW_over_r(r)) << "r = " << r;
+    }
+  }, any);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKernels, KernelTest,
