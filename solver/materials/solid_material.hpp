@@ -28,8 +28,8 @@ struct SoilMaterial {
   double grain_density() const { return density / (1.0 - porosity); }  // rho_s
   double artificial_viscosity = 0.1;  // Monaghan alpha for solids (Bui et al. 2008: 0.1)
   double artificial_viscosity_beta = 0.0;
-  // Balsara's (1995) switch: Pi_ij scaled by (f_i + f_j)/2, f = |div v| / (|div v| + |curl v| + 1e-4 c/h),
-  // so that the viscosity acts in compression and not in shear flow (soil/soil_forces.hpp)
+  // Balsara's (1995) switch: Pi_ij scaled by (f_i + f_j)/2 with f from balsara_switch
+  // (soil/viscosity_switch.hpp), so that the viscosity acts in compression and not in shear flow
   bool artificial_viscosity_balsara = false;
   double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
   double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n

@@ -131,7 +131,7 @@ void Simulation::neighbour_search() {
     const auto group = [&](std::uint32_t i) { return P_.kind[i] == Kind::Soil ? 0 : P_.kind[i] == Kind::Fluid ? 1 : 2; };
     std::array<std::size_t, 4> at{};  // a stable counting sort on the group
     for (const std::uint32_t i : by_cell) ++at[static_cast<std::size_t>(group(i)) + 1];
-    at[2] += at[1];
+    for (std::size_t g = 1; g < at.size(); ++g) at[g] += at[g - 1];
     std::vector<std::uint32_t> order(by_cell.size());
     for (const std::uint32_t i : by_cell) order[at[static_cast<std::size_t>(group(i))]++] = i;
     P_.permute(order);

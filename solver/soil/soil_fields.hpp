@@ -17,8 +17,8 @@ struct SoilFields {
   static constexpr const char* preconsolidation = "preconsolidation_pressure";   // p_c [Pa]
   static constexpr const char* plastic_volumetric_strain = "plastic_volumetric_strain";  // tr(eps_p), tension positive
   static constexpr const char* wave_speed = "wave_speed";  // local P-wave speed [m/s] (moduli grow with p')
-  // materials.artificial_viscosity_switch "balsara": f = |div v| / (|div v| + |curl v| + 1e-4 c/h) per
-  // solid particle from the last stress update (1 before the first, and for materials without the switch)
+  // materials.artificial_viscosity_switch "balsara": f (soil/viscosity_switch.hpp) per solid particle
+  // from the last stress update (1 before the first, and for materials without the switch)
   static constexpr const char* viscosity_switch = "viscosity_switch";
   // numerics.kernel_gradient_correction_stress: B^-T - I per solid particle, row-major (a = 0..2, b = 0..2),
   // from the last stress update (zero: no correction, e.g. where B is singular)

@@ -72,7 +72,9 @@ void SoilForces::allocate(Particles& P) const {
     P.add_field(SoilFields::wave_speed, SoilFields::owner);
     update_wave_speeds(P);
   }
-  if (has_viscosity_switch_ && !P.has_field(SoilFields::viscosity_switch)) {  // a restart keeps its values
+  // a restart or a construction stage keeps the values already there (for the snapshots: the stress
+  // update recomputes f before each momentum pass reads it)
+  if (has_viscosity_switch_ && !P.has_field(SoilFields::viscosity_switch)) {
     auto& f = P.add_field(SoilFields::viscosity_switch, SoilFields::owner);
     std::fill(f.begin(), f.end(), 1.0);
   }
