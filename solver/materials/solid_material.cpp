@@ -25,6 +25,9 @@ const bool documented = register_section(
       choice_doc("artificial_viscosity_switch", {"none", "balsara"}, "none",
                  "balsara: the viscosity scaled by f = abs(div v) / (abs(div v) + abs(curl v) + 1e-4 c/h) "
                  "(Balsara 1995), on in compression, off in shear flow"),
+      {"kernel_gradient_correction", FieldType::Boolean, "true, false", "false", "-",
+       "this material's particles use the corrected kernel gradient (Bonet & Lok 1999) in the velocity gradient "
+       "and in the stress divergence, whatever numerics says (e.g. a structure a few particles thick)"},
       {"artificial_stress", FieldType::Object, "see materials.artificial_stress", "off", "-",
        "tensile-instability correction (Gray, Monaghan & Swift 2001)"}}});
 const bool documented_as = register_section(
@@ -80,6 +83,7 @@ SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, 
   m.artificial_viscosity = f.number("artificial_viscosity", Range::between(0, 1), 0.1);
   m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
   m.artificial_viscosity_balsara = f.choice("artificial_viscosity_switch", {"none", "balsara"}, "none") == "balsara";
+  m.kernel_gradient_correction = f.boolean("kernel_gradient_correction", false);
   if (auto a = f.optional_object("artificial_stress")) {
     a->section("materials.artificial_stress");
     m.artificial_stress = a->number("epsilon", Range::between(0, 1));

@@ -33,6 +33,11 @@ struct SoilMaterial {
   bool artificial_viscosity_balsara = false;
   double artificial_stress = 0.0;     // epsilon (Gray, Monaghan & Swift 2001); 0 = off
   double artificial_stress_exponent = 4.0;  // n in f_ij = (W_ij / W(dx))^n
+  // This material's particles use the corrected kernel gradient (Bonet & Lok 1999) in the velocity
+  // gradient and in their side of the stress divergence, as numerics.kernel_gradient_correction and
+  // kernel_gradient_correction_stress do for every solid: a structure a few particles thick transmits
+  // its section's moment with it (without it its free surfaces' truncated sums make it too compliant)
+  bool kernel_gradient_correction = false;
 
   std::string model_name() const;
   // The model's state fields in P (created, owned by the soil module, if not there yet).

@@ -46,13 +46,14 @@ constexpr int kMomentumColumns = 32;  // momentum_with's PairColumns
 
 }  // namespace
 
-SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
+SoilForces::SoilForces(const Scene& scene) : scene_(scene), stress_correction_(scene.kernel_gradient_correction_stress) {
   if (scene.walls.type == "mirror") mirror_ = std::make_shared<const MirrorWalls>(scene);
   for (const auto& m : scene.soils) {
     wave_speed_.push_back(m.wave_speed());
     if (m.pressure_dependent()) has_pressure_dependent_ = true;
     else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
     if (m.artificial_viscosity_balsara) has_viscosity_switch_ = true;
+    if (m.kernel_gradient_correction) stress_correction_ = true;
     std::visit([&](const auto& model) {
       for (const char* f : model.state_fields) state_fields_.insert(f);
       if constexpr (requires { model.elastic; }) hooke_.push_back(materials::LinearElastic::with(model.elastic));
@@ -66,7 +67,7 @@ void SoilForces::allocate(Particles& P) const {
     P.add_field(f, SoilFields::owner);
   if (P.dim == 3) { P.add_field(SoilFields::xz, SoilFields::owner); P.add_field(SoilFields::yz, SoilFields::owner); }
   for (const auto& f : state_fields_) P.add_field(f, SoilFields::owner);
-  if (scene_.kernel_gradient_correction_stress)
+  if (stress_correction_)
     for (const char* f : SoilFields::correction) P.add_field(f, SoilFields::owner);
   if (has_pressure_dependent_) {
     P.add_field(SoilFields::wave_speed, SoilFields::owner);
@@ -131,9 +132,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   std::vector<materials::SolidState> states = bind_states(P);
   for (auto& st : states) st.dt = dt;
   long bad = -1, unconverged = -1;
-  const bool correct = scene_.kernel_gradient_correction;
-  double* bt[9] = {};  // B^-T - I for the stress divergence (numerics.kernel_gradient_correction_stress)
-  if (scene_.kernel_gradient_correction_stress)
+  double* bt[9] = {};  // B^-T - I for the stress divergence (stress_correction_)
+  if (stress_correction_)
     for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
   const Kind* kind = P.kind.data();
   const double *vx = P.vx.data(), *vy = P.vy.data(), *vz = P.vz.data();
@@ -152,6 +152,9 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
     if (!is_solid(ki)) continue;
+    const SoilMaterial& mi = scene_.soils[P.material[i]];
+    const bool correct = scene_.kernel_gradient_correction || mi.kernel_gradient_correction;
+    const bool correct_stress = scene_.kernel_gradient_correction_stress || mi.kernel_gradient_correction;
     const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double drho = 0;
@@ -214,7 +217,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
       Bm.computeInverseAndDetWithCheck(Binv, det, invertible, 1e-3);
       if (bt[0])
         for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) bt[3 * a + b][i] = invertible ? Binv(b, a) - (a == b ? 1.0 : 0.0) : 0.0;
+          for (int b = 0; b < 3; ++b)
+            bt[3 * a + b][i] = invertible && correct_stress ? Binv(b, a) - (a == b ? 1.0 : 0.0) : 0.0;
       if (invertible) {
         const Eigen::Matrix3d Lc = Lm * Binv;
         for (int a = 0; a < Dim; ++a)
@@ -357,9 +361,10 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
   const auto* S = S_.data();
   const auto* R = R_.data();
   const std::uint8_t* tension = tension_.data();
-  // numerics.kernel_gradient_correction_stress: each side's stress with its own corrected gradient
+  // numerics.kernel_gradient_correction_stress (or a material's kernel_gradient_correction): each side's
+  // stress with its own corrected gradient (B^-T - I zero on the sides that are not corrected)
   const double* bt[9] = {};
-  if (scene_.kernel_gradient_correction_stress)
+  if (stress_correction_)
     for (int c = 0; c < 9; ++c) bt[c] = P.field(SoilFields::correction[c]).data();
   const bool two_phase = scene_.two_phase();  // skip the pore water's part of the lists (continuum_pair)
   const IndexRanges skeleton_and_walls = cells.ranges_of({Kind::Soil, Kind::DummyWall});

@@ -10,7 +10,8 @@
 //   momentum           dv_i/dt = sum_j m_j (S_i + S_j + (R_i + R_j) f_ij^n - Pi_ij I) . grad_i W_ij + g,
 //                      S = sigma / rho^2                                           (Bui 2008, eq. 29)
 //                      optionally with S_i B_i^-T grad W + S_j B_j^-T grad W for the stresses, the
-//                      corrected gradient on each side (numerics.kernel_gradient_correction_stress)
+//                      corrected gradient on each side (numerics.kernel_gradient_correction_stress;
+//                      per material, with the corrected L: materials.<name>.kernel_gradient_correction)
 //   artificial viscosity Pi_ij = (-alpha c_ij mu_ij + beta mu_ij^2) / rho_ij for v_ij.r_ij < 0
 //                                                                                  (Monaghan 1992, eq. 4.2)
 //                      optionally scaled by (f_i + f_j)/2, f = |div v| / (|div v| + |curl v| + 1e-4 c/h)
@@ -81,7 +82,10 @@ class SoilForces {
   std::set<std::string> state_fields_;  // the models' state fields (materials/solid_model.hpp)
   std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
-  bool has_viscosity_switch_ = false;   // a material with Balsara's switch (field SoilFields::viscosity_switch)
+  bool has_viscosity_switch_ = false;  // a material with Balsara's switch (field SoilFields::viscosity_switch)
+  // numerics.kernel_gradient_correction_stress or a material's kernel_gradient_correction: the field
+  // SoilFields::correction (B^-T - I, zero for the particles that are not corrected)
+  bool stress_correction_ = false;
   mutable double max_wave_speed_ = 0;
   mutable bool elastic_only_ = false;
   // per material: Hooke's law with its own constants, for the elastic mode (models with constant moduli)

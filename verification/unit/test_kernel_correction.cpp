@@ -1,5 +1,5 @@
 // The kernel-gradient correction of the solids' stress divergence
-// (numerics.kernel_gradient_correction_stress, soil/soil_forces.hpp): the pair force keeps linear momentum
+// (numerics.kernel_gradient_correction_stress, or per material, soil/soil_forces.hpp): the pair force keeps linear momentum
 // (antisymmetric) in a stretched free block whose edge particles carry corrections far from the
 // identity, and the option is rejected without the velocity-gradient correction. Its accuracy is the
 // catalogue's: case elastic_strip_wave.
@@ -69,5 +69,51 @@ TEST(KernelCorrection, StressCorrectionNeedsTheVelocityGradientCorrection) {
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("kernel_gradient_correction_stress"), std::string::npos) << e.what();
+  }
+}
+
+// materials.<name>.kernel_gradient_correction corrects that material's particles only (here the left
+// half of a block of two materials; numerics asks for no correction): the right half's corrections stay
+// zero, the left half's free edges carry them, and the pair force across the two keeps linear momentum.
+TEST(KernelCorrection, PerMaterialCorrectsOnlyThatMaterial) {
+  json j = block_json(false);
+  j["numerics"]["kernel_gradient_correction"] = false;
+  j["materials"]["corrected"] = j["materials"]["solid"];
+  j["materials"]["corrected"]["kernel_gradient_correction"] = true;
+  j["bodies"] = json::parse(R"([
+    {"material": "corrected", "shape": "box", "min": [0, 0], "max": [0.1, 0.1]},
+    {"material": "solid", "shape": "box", "min": [0.1, 0], "max": [0.2, 0.1]}])");
+  const Scene scene = parse_scene(j, "block.json");
+  ASSERT_FALSE(scene.kernel_gradient_correction);
+  Simulation sim(scene);
+  run_stretched(sim);
+  const Particles& P = sim.particles();
+  const auto& cxx = P.extra_fields().at(SoilFields::correction[0]);
+  const auto& cyy = P.extra_fields().at(SoilFields::correction[4]);
+  double largest_corrected = 0, largest_other = 0, fx = 0, fy = 0, f_abs = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    const double c = std::max(std::abs(cxx[i]), std::abs(cyy[i]));
+    if (scene.soils[P.material[i]].kernel_gradient_correction) largest_corrected = std::max(largest_corrected, c);
+    else largest_other = std::max(largest_other, c);
+    fx += P.m[i] * P.ax[i];
+    fy += P.m[i] * P.ay[i];
+    f_abs += P.m[i] * std::hypot(P.ax[i], P.ay[i]);
+  }
+  EXPECT_GT(largest_corrected, 0.1);
+  EXPECT_EQ(largest_other, 0.0);
+  ASSERT_GT(f_abs, 0.0);
+  EXPECT_LT(std::abs(fx), 1e-12 * f_abs);
+  EXPECT_LT(std::abs(fy), 1e-12 * f_abs);
+}
+
+TEST(KernelCorrection, PerMaterialFlagMustBeABoolean) {
+  json j = block_json(false);
+  j["materials"]["solid"]["kernel_gradient_correction"] = "yes";
+  try {
+    parse_scene(j, "block.json");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("kernel_gradient_correction"), std::string::npos) << e.what();
   }
 }
