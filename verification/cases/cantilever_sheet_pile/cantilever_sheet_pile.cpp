@@ -7,8 +7,9 @@
 // structure's stress across its section,
 //   M(y) = -I * sum_k sigma_yy,k (x_k - xbar) / sum_k (x_k - xbar)^2,  I = t^3 / 12
 // (the row's linear fit: beam theory), positive with tension on the retained side, against the
-// free-earth (net-pressure) method, and the moment of the contact forces above each section as an
-// equilibrium check.
+// free-earth (net-pressure) method; the moment of the contact forces above each section (the soil's
+// load, scored against the method too) and that of all forces above it, the pile's weight and inertia
+// included (what the section carries by equilibrium: the check of the stress moment, recorded).
 
 #include <algorithm>
 #include <cmath>
@@ -81,29 +82,45 @@ PileRows pile_rows(const Particles& P, std::size_t pile_body, double y_toe, doub
 
 struct PileState {
   std::vector<double> xc, moment, contact_fx;  // per row: centre x, M from stress [N m/m], contact force [N/m]
+  // per row: the moment about the row's centre of every force on the rows above but the pile's own
+  // SPH forces: contact, weight (the leaning pile's P-delta) and inertia, F = f_contact + m (g - a)
+  std::vector<double> moment_all;
 };
 
-PileState pile_state(const Particles& P, const PileRows& rows, double I) {
+PileState pile_state(const Particles& P, const PileRows& rows, double I, double gx, double gy) {
   std::unordered_map<std::int64_t, std::size_t> at;
   for (std::size_t i = 0; i < P.size(); ++i) at[P.id[i]] = i;
   const auto& syy = P.field(SoilFields::yy);
   const auto& fx = P.field(ContactFields::fx);
+  const auto& fy = P.field(ContactFields::fy);
   PileState s;
-  for (const auto& row : rows.ids) {
-    double xbar = 0, f = 0;
-    for (auto id : row) xbar += P.x[at.at(id)];
+  const std::size_t n = rows.ids.size();
+  std::vector<double> yc(n), Fx(n), Fy(n), Fx_y(n), Fy_x(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const auto& row = rows.ids[r];
+    double xbar = 0, ybar = 0, f = 0;
+    for (auto id : row) { xbar += P.x[at.at(id)]; ybar += P.y[at.at(id)]; }
     xbar /= static_cast<double>(row.size());
+    ybar /= static_cast<double>(row.size());
     double sxs = 0, sxx = 0;
     for (auto id : row) {
       const std::size_t i = at.at(id);
       sxs += syy[i] * (P.x[i] - xbar);
       sxx += (P.x[i] - xbar) * (P.x[i] - xbar);
       f += fx[i];
+      const double Fxi = fx[i] + P.m[i] * (gx - P.ax[i]), Fyi = fy[i] + P.m[i] * (gy - P.ay[i]);
+      Fx[r] += Fxi; Fy[r] += Fyi; Fx_y[r] += Fxi * P.y[i]; Fy_x[r] += Fyi * P.x[i];
     }
     s.xc.push_back(xbar);
+    yc[r] = ybar;
     s.moment.push_back(sxx > 0 ? -I * sxs / sxx : 0.0);
     s.contact_fx.push_back(f);
   }
+  // positive as the contact moment below: sum of F_x (y - y_c) - F_y (x - x_c) over the rows above
+  s.moment_all.assign(n, 0.0);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t q = r + 1; q < n; ++q)
+      s.moment_all[r] += Fx_y[q] - yc[r] * Fx[q] - (Fy_x[q] - s.xc[r] * Fy[q]);
   return s;
 }
 
@@ -125,7 +142,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
   const double I = g.t * g.t * g.t / 12.0;
   Simulation sim(scene);
   const PileRows rows = pile_rows(sim.particles(), 1, g.y_toe(), dx);
-  const PileState s0 = pile_state(sim.particles(), rows, I);
+  const PileState s0 = pile_state(sim.particles(), rows, I, scene.gravity[0], scene.gravity[1]);
   Record rec = start_record(cfg, ctx);
   rec.variant = variant;
   const std::size_t top = rows.ids.size() - 1;
@@ -142,27 +159,33 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
   PileState avg;
   avg.moment.assign(rows.ids.size(), 0.0);
   avg.contact_fx.assign(rows.ids.size(), 0.0);
+  avg.moment_all.assign(rows.ids.size(), 0.0);
   long samples = 0;
   const bool ok = run_timed(sim, rec, [&](const Simulation& sm) {
     if (sm.time() < next) return;
     next = sm.time() + 0.01;
     double u, th;
-    const PileState ps = pile_state(sm.particles(), rows, I);
+    const PileState ps = pile_state(sm.particles(), rows, I, scene.gravity[0], scene.gravity[1]);
     head(ps, u, th);
     if (sm.time() >= t_drift) {  // the profiles averaged over the window (the contact forces chatter step to step)
       window_t.push_back(sm.time());
       window_u.push_back(u);
-      for (std::size_t r = 0; r < rows.ids.size(); ++r) { avg.moment[r] += ps.moment[r]; avg.contact_fx[r] += ps.contact_fx[r]; }
+      for (std::size_t r = 0; r < rows.ids.size(); ++r) {
+        avg.moment[r] += ps.moment[r];
+        avg.contact_fx[r] += ps.contact_fx[r];
+        avg.moment_all[r] += ps.moment_all[r];
+      }
       ++samples;
     }
     motion.x.push_back(sm.time());
     motion.y.push_back(u / g.H);
   }, ctx.progress);
   double u_end, theta_end;
-  head(pile_state(sim.particles(), rows, I), u_end, theta_end);
+  head(pile_state(sim.particles(), rows, I, scene.gravity[0], scene.gravity[1]), u_end, theta_end);
   for (std::size_t r = 0; r < rows.ids.size(); ++r) {
     avg.moment[r] /= std::max(samples, 1L);
     avg.contact_fx[r] /= std::max(samples, 1L);
+    avg.moment_all[r] /= std::max(samples, 1L);
   }
   const PileState& s1 = avg;
   // stands: the head moved less than stands_drift x H over the last drift_window of the hold, by the
@@ -198,8 +221,9 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
     const auto& ref_moment = ref.column("moment_kNm_per_m");
     Series m_stress{"SPH, from the pile's stress (mean over the window)", "simulation", "moment", "bending moment [kN m/m]", "depth [m]", {}, {}};
     Series m_contact{"SPH, from the contact forces above", "simulation", "moment", m_stress.xlabel, m_stress.ylabel, {}, {}};
+    Series m_all{"SPH, from all forces above (contact, weight, inertia)", "simulation", "moment", m_stress.xlabel, m_stress.ylabel, {}, {}};
     Series p_net{"SPH net contact pressure", "simulation", "pressure", "net pressure [kPa]", "depth [m]", {}, {}};
-    double M_max = -1e300, z_max = NAN, Mc_max = -1e300, zc_max = NAN;
+    double M_max = -1e300, z_max = NAN, Mc_max = -1e300, zc_max = NAN, Ma_max = -1e300, za_max = NAN;
     const std::size_t end_rows = static_cast<std::size_t>(std::ceil(scene.support() / dx));
     for (std::size_t r = 0; r <= top; ++r) {
       const double depth = g.y_top() - rows.y0[r];
@@ -209,6 +233,8 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
       m_stress.y.push_back(-depth);
       m_contact.x.push_back(Mc / 1e3);
       m_contact.y.push_back(-depth);
+      m_all.x.push_back(s1.moment_all[r] / 1e3);
+      m_all.y.push_back(-depth);
       p_net.x.push_back(s1.contact_fx[r] / dx / 1e3);
       p_net.y.push_back(-depth);
       // the largest moments away from the pile's free ends, whose rows have a truncated kernel along
@@ -216,6 +242,7 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
       if (r < end_rows || r + end_rows > top) continue;
       if (s1.moment[r] > M_max) { M_max = s1.moment[r]; z_max = depth; }
       if (Mc > Mc_max) { Mc_max = Mc; zc_max = depth; }
+      if (s1.moment_all[r] > Ma_max) { Ma_max = s1.moment_all[r]; za_max = depth; }
     }
     Series m_ref{"free-earth method (Das, net pressure)", "analytical", "moment", m_stress.xlabel, m_stress.ylabel, {}, {}};
     Series p_ref{"free-earth method (Das, net pressure)", "analytical", "pressure", p_net.xlabel, p_net.ylabel, {}, {}};
@@ -228,11 +255,14 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, const std::string& 
       if (ref_moment[k] > M_ref) { M_ref = ref_moment[k]; z_ref = ref_depth[k]; }
     }
     M_ref *= 1e3;
-    for (auto* s : {&m_stress, &m_contact, &m_ref, &p_net, &p_ref}) rec.series.push_back(*s);
+    for (auto* s : {&m_stress, &m_contact, &m_all, &m_ref, &p_net, &p_ref}) rec.series.push_back(*s);
     rec.extra["max_moment_kNm_per_m"] = M_max / 1e3;
     rec.extra["max_moment_depth_m"] = z_max;
     rec.extra["max_moment_from_contact_kNm_per_m"] = Mc_max / 1e3;
     rec.extra["max_moment_from_contact_depth_m"] = zc_max;
+    // recorded, not scored: what the pile's section must carry by equilibrium (the stress moment's check)
+    rec.extra["max_moment_from_all_forces_kNm_per_m"] = Ma_max / 1e3;
+    rec.extra["max_moment_from_all_forces_depth_m"] = za_max;
     rec.extra["free_earth_max_moment_kNm_per_m"] = M_ref / 1e3;
     rec.extra["free_earth_max_moment_depth_m"] = z_ref;
     if (expected == "limit") {
