@@ -156,6 +156,14 @@ struct Scene {
   std::vector<SoilMaterial> soils;       // soils (Kind::Soil particles index this list)
   bool has_fluid() const { return !materials.empty(); }
   bool has_soil() const { return !soils.empty(); }
+  // The corrections a solid particle of soils[k] gets: numerics' for every solid, or its material's own
+  // (materials.<name>.kernel_gradient_correction corrects both)
+  bool corrects_velocity_gradient(std::size_t k) const {
+    return kernel_gradient_correction || soils[k].kernel_gradient_correction;
+  }
+  bool corrects_stress_divergence(std::size_t k) const {
+    return kernel_gradient_correction_stress || soils[k].kernel_gradient_correction;
+  }
   std::vector<BodySpec> bodies;
   WallSpec walls;
   GravityLoadingSpec gravity_loading;

@@ -46,14 +46,15 @@ constexpr int kMomentumColumns = 32;  // momentum_with's PairColumns
 
 }  // namespace
 
-SoilForces::SoilForces(const Scene& scene) : scene_(scene), stress_correction_(scene.kernel_gradient_correction_stress) {
+SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
   if (scene.walls.type == "mirror") mirror_ = std::make_shared<const MirrorWalls>(scene);
+  for (std::size_t k = 0; k < scene.soils.size(); ++k)
+    if (scene.corrects_stress_divergence(k)) stress_correction_ = true;
   for (const auto& m : scene.soils) {
     wave_speed_.push_back(m.wave_speed());
     if (m.pressure_dependent()) has_pressure_dependent_ = true;
     else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
     if (m.artificial_viscosity_balsara) has_viscosity_switch_ = true;
-    if (m.kernel_gradient_correction) stress_correction_ = true;
     std::visit([&](const auto& model) {
       for (const char* f : model.state_fields) state_fields_.insert(f);
       if constexpr (requires { model.elastic; }) hooke_.push_back(materials::LinearElastic::with(model.elastic));
@@ -152,9 +153,8 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
     if (!is_solid(ki)) continue;
-    const SoilMaterial& mi = scene_.soils[P.material[i]];
-    const bool correct = scene_.kernel_gradient_correction || mi.kernel_gradient_correction;
-    const bool correct_stress = scene_.kernel_gradient_correction_stress || mi.kernel_gradient_correction;
+    const bool correct = scene_.corrects_velocity_gradient(P.material[i]);
+    const bool correct_stress = scene_.corrects_stress_divergence(P.material[i]);
     const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
     double L[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, B[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double drho = 0;

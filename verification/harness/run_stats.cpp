@@ -35,7 +35,8 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
     rec.options["artificial_viscosity"] = m.artificial_viscosity;
     rec.options["artificial_stress"] = m.artificial_stress;
     if (m.artificial_stress > 0) rec.options["artificial_stress_exponent"] = m.artificial_stress_exponent;
-    rec.options["kernel_gradient_correction"] = s.kernel_gradient_correction;
+    rec.options["kernel_gradient_correction"] = s.corrects_velocity_gradient(0);  // numerics' or the material's
+    rec.options["kernel_gradient_correction_stress"] = s.corrects_stress_divergence(0);
     std::visit([&](const auto& model) {  // the friction angles of the models that have them
       if constexpr (requires { model.friction_angle; }) {
         rec.options["friction_angle_deg"] = model.friction_angle;

@@ -79,11 +79,6 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["deflection_theory_m"] = b.delta;
   rec.extra["shear_part_of_theory"] = (b.q * b.L * b.L / (2.0 * 5.0 / 6.0 * b.G * b.H)) / b.delta;
   rec.extra["H_over_dx"] = b.H / scene.dx;
-  rec.options["artificial_stress"] = scene.soils.front().artificial_stress;
-  rec.options["kernel_gradient_correction"] =
-      scene.kernel_gradient_correction || scene.soils.front().kernel_gradient_correction;
-  rec.options["kernel_gradient_correction_stress"] =
-      scene.kernel_gradient_correction_stress || scene.soils.front().kernel_gradient_correction;
   add_case_metric(rec, cfg, "deflection_rel_error", std::abs(delta_sph - b.delta) / b.delta, ok);
   rec.snapshot = field_snapshot(sim, SoilFields::xx, "Pa");
   return rec;
