@@ -120,7 +120,8 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   const double* swm = P.find(SoilWallFields::m);
   const double* swrho = P.find(SoilWallFields::rho);
   const double* vol = volumes(P);
-  const IndexRanges for_soil = cells.ranges_of({Kind::Fluid});  // the kinds each side reads below
+  // (the skeleton's own sum is taken in its pressure-force pass, apply_with, which reads the same
+  // neighbours: a pass fewer)
   const IndexRanges for_water = cells.ranges_of({Kind::Fluid, Kind::Soil, Kind::DummyWall});
 #pragma omp parallel
   {
@@ -128,11 +129,9 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
   PairColumns cols;  // the kernel's values of each particle's neighbours (core/kernel_columns.hpp)
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
-    const Kind ki = P.kind[i];
-    if (ki != Kind::Soil && ki != Kind::Fluid) continue;
-    const Kind other = ki == Kind::Soil ? Kind::Fluid : Kind::Soil;
+    if (P.kind[i] != Kind::Fluid) continue;
     double sum = 0, sg = 0, g[3] = {0, 0, 0}, gn[3] = {0, 0, 0};
-    cells.gather_any_dim(P, i, nb, ki == Kind::Soil ? for_soil : for_water);
+    cells.gather_any_dim(P, i, nb, for_water);
     cols.reserve(nb.n, 2);
     double *Wq = cols.col(0), *fwq = cols.col(1);
     kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
@@ -140,16 +139,17 @@ void Seepage::porosity_with(const K& kernel, Particles& P, const CellList& cells
       const std::uint32_t j = nb.j[q];
       const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q];
       const Kind kj = P.kind[j];
-      if (ki == Kind::Fluid && kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
+      if (kj == Kind::Fluid) {  // the water's porosity gradient (as in porosity_rate_with)
         const double c = vol[j] * (por[j] - por[i]) * fwq[q];
         gn[0] += c * dx; gn[1] += c * dy; gn[2] += c * dz;
+        continue;
       }
-      const bool skeleton = ki == Kind::Fluid && kj == Kind::DummyWall;  // walls bound the skeleton too
-      if (kj != other && !skeleton) continue;
-      const double Vj = skeleton && swm ? swm[j] / swrho[j] : vol[j];
+      const bool wall = kj == Kind::DummyWall;  // walls bound the skeleton too
+      if (kj != Kind::Soil && !wall) continue;
+      const double Vj = wall && swm ? swm[j] / swrho[j] : vol[j];
       const double fw = fwq[q], W = Wq[q];
-      if (kj == other) sum += Vj * W;
-      if (ki == Kind::Fluid) { sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz; }
+      if (!wall) sum += Vj * W;
+      sg += Vj * W; g[0] += Vj * fw * dx; g[1] += Vj * fw * dy; g[2] += Vj * fw * dz;
     }
     S[i] = sum;
     Sg[i] = sg;
@@ -254,7 +254,7 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
   const bool flat = cells.dim() == 2;  // 2D: nb.dz is not written
   const double* por = P.field(SeepageFields::porosity).data();
   const double* cond = P.field(SeepageFields::conductivity).data();
-  const double* S = P.field(SeepageFields::other_phase_sum).data();
+  double* S = P.field(SeepageFields::other_phase_sum).data();  // the skeleton's are written here
   const double* G[3] = {P.field(SeepageFields::gx).data(), P.field(SeepageFields::gy).data(),
                         P.field(SeepageFields::gz).data()};
   const double* Sg = P.field(SeepageFields::skeleton_sum).data();
@@ -335,14 +335,19 @@ void Seepage::apply_with(const K& kernel, Particles& P, const CellList& cells) c
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     C[i] = 0;
+    if (P.kind[i] == Kind::Soil) S[i] = 0;
     if (!saturated(i)) continue;
     double fp[3] = {0, 0, 0}, k[3] = {0, 0, 0}, sp = 0, sw = 0, jump = 0;
-    const double rhoi = P.rho[i], Si = S[i], bi = bs[i];
+    const double rhoi = P.rho[i], bi = bs[i];
     DragSums drag;
     cells.gather_any_dim(P, i, nb, water_and_walls);
     cols.reserve(nb.n, 2);
     double *Wq = cols.col(0), *fwq = cols.col(1);
     kernel_values_and_gradients(kernel, nb.r2.data(), nb.n, Wq, fwq);
+    double Si = 0;  // the skeleton's kernel sum of the water (the drag's pair normalisation)
+    for (std::size_t q = 0; q < nb.n; ++q)
+      if (P.kind[nb.j[q]] == Kind::Fluid) Si += vol[nb.j[q]] * Wq[q];
+    S[i] = Si;
     for (std::size_t q = 0; q < nb.n; ++q) {
       const std::uint32_t j = nb.j[q];
       const double dx = nb.dx[q], dy = nb.dy[q], dz = flat ? 0.0 : nb.dz[q];

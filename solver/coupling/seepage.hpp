@@ -46,7 +46,8 @@ class Seepage {
   // At t = 0 (after the first neighbour search): porosity of every particle, and the water particles'
   // masses and partial densities n rho_w so that their intrinsic density is the one they were built with.
   void initialise(Particles& P, const CellList& cells) const;
-  // Porosity and conductivity of the skeleton (from its density) and each phase's kernel sum of the other.
+  // Porosity and conductivity of the skeleton (from its density) and the water's kernel sums of the
+  // skeleton (the skeleton's sum of the water is taken in apply).
   void update_porosity(Particles& P, const CellList& cells) const;
   // The water particles' porosity rate at (x^{n+1}, v^{n+1/2}) and its update over dt.
   void porosity_rate(Particles& P, const CellList& cells) const;

@@ -8,7 +8,7 @@ struct SeepageFields {
   static constexpr const char* porosity = "porosity";                  // soil and water particles, water walls
   static constexpr const char* conductivity = "hydraulic_conductivity"; // soil particles [m/s]
   static constexpr const char* porosity_rate = "porosity_rate";        // water particles: D^w n/Dt [1/s]
-  static constexpr const char* other_phase_sum = "other_phase_kernel_sum";  // sum_j V_j W_ij over the other phase
+  static constexpr const char* other_phase_sum = "other_phase_kernel_sum";  // sum_j V_j W_ij over the other phase (water: Seepage::update_porosity; skeleton: Seepage::apply)
   static constexpr const char* gx = "skeleton_kernel_gradient_x", *gy = "skeleton_kernel_gradient_y",
                                *gz = "skeleton_kernel_gradient_z";  // water particles: G = sum_s V_s grad W
   static constexpr const char* skeleton_sum = "skeleton_kernel_sum";  // water particles: sum_s V_s W (walls included)
