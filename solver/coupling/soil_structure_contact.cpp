@@ -55,6 +55,7 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
   const double dx0 = scene_.dx;
   partner_.assign(n, -1);
   force_.resize(n);
+  shift_.assign(n, {0.0, 0.0, 0.0});
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Soil) continue;
@@ -73,12 +74,18 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
     const double gap = std::max(d[0] * nrm[0] + d[1] * nrm[1] + d[2] * nrm[2] - dx0,
                                 std::min(0.0, std::sqrt(best_r2) - dx0));
     if (gap > 0.5 * dx0) continue;
+    // a penetration is pushed out by position, a fraction of it each step, not by a velocity: the soil
+    // particle is moved along the normal (split impulse, Catto 2006; see the header)
+    if (gap < 0 && !(fixed && fixed[i] > 0)) {
+      const double s = -kPenetrationRecovery * gap;
+      shift_[i] = {s * nrm[0], s * nrm[1], s * nrm[2]};
+    }
     const bool rigid = !free_structure(j);  // prescribed motion (its velocity) or clamped (held at rest)
     double vj[3] = {P.vx[j], P.vy[j], P.vz[j]};
     if (!rigid) { vj[0] += dt * P.ax[j]; vj[1] += dt * P.ay[j]; vj[2] += dt * P.az[j]; }
     const double u[3] = {P.vx[i] + dt * P.ax[i] - vj[0], P.vy[i] + dt * P.ay[i] - vj[1], P.vz[i] + dt * P.az[i] - vj[2]};
     const double un = u[0] * nrm[0] + u[1] * nrm[1] + u[2] * nrm[2];
-    const double target = gap >= 0 ? -gap / dt : -kPenetrationRecovery * gap / dt;
+    const double target = gap >= 0 ? -gap / dt : 0.0;  // closes the gap in the step; a penetration no further
     if (un >= target) continue;
     const double mred = rigid ? P.m[i] : P.m[i] * P.m[j] / (P.m[i] + P.m[j]);
     const double Fn = mred * (target - un) / dt;
@@ -91,6 +98,10 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
     P.ax[i] += F[0] / P.m[i]; P.ay[i] += F[1] / P.m[i]; P.az[i] += F[2] / P.m[i];
     partner_[i] = best;
     force_[i] = F;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    P.x[i] += shift_[i][0]; P.y[i] += shift_[i][1]; P.z[i] += shift_[i][2];
   }
   // reactions (serial: several soil particles may press on one structure particle)
   double* fx = P.field(ContactFields::fx).data();

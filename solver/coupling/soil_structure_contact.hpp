@@ -9,8 +9,13 @@
 //   gap              g = (x_i - x_j) . n_j - dx   (particle centres sit dx/2 off the interface);
 //   trial velocities v* = v + dt a (a: every other force), rigid structures: their prescribed velocity;
 //   normal           the relative normal velocity u_n = (v*_i - v*_j) . n may at most close the gap in the
-//                    step, u_n >= -g/dt (a penetration g < 0 is pushed back at -beta g/dt, beta = 0.2):
+//                    step, u_n >= -g/dt, and a penetration g < 0 may not deepen, u_n >= 0:
 //                    F_n = m* (u_target - u_n)/dt >= 0, m* = m_i m_j/(m_i + m_j) (m_i if j is rigid or fixed);
+//   penetration      the soil particle is moved out along n by beta |g| each step (beta = 0.2), a position
+//                    correction that adds no momentum (a velocity bias -beta g/dt, Baumgarte 1972, Comput.
+//                    Methods Appl. Mech. Engng 1, 1-16, kept the recovery speed after the penetration was
+//                    gone, at a speed set by the time step: a light pile, whose stiffness makes dt 3 times
+//                    shorter, threw its head particle out of the domain);
 //   tangential       sticking needs F_t = m* |u_t|/dt; Coulomb limits it, |F_t| <= tan(delta) F_n, opposite u_t.
 //   a penetration is counted at most as the centres' overlap, g >= min(0, |x_i - x_j| - dx): at a convex
 //                    structure corner the corner particle's normal is diagonal, and a soil particle one
@@ -56,6 +61,7 @@ class SoilStructureContact {
   std::vector<double> tan_delta_;  // per scene body
   mutable std::vector<std::int64_t> partner_;  // per particle: structure partner of a soil particle in contact
   mutable std::vector<std::array<double, 3>> force_;
+  mutable std::vector<std::array<double, 3>> shift_;  // per particle: the penetration's position correction
 };
 
 }  // namespace geosph

@@ -198,7 +198,7 @@ std::vector<Stage> Simulation::stage_table() {
                             {"drag_rate", "drag_partner_*"}, {"a[solid]", "a[fluid]"},
                             [this] { seepage_->apply(P_, cells_); }});
   add(contact_ != nullptr, {"soil_structure_contact", Hook::Forces, {"x", "v", "a", "structure_body"},
-                            {"contact_force", "contact_normal"}, {"a[solid]"},
+                            {"contact_force", "contact_normal", "x[soil]"}, {"a[solid]"},
                             [this] { contact_->apply(P_, cells_, dt_); }});
   // last, on the total force as FLAC damps it: the contact then holds the soil against its undamped
   // weight, and the equilibrium measure sees the contact's reaction (with the damping before the contact,
