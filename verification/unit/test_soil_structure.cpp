@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "coupling/soil_structure_contact.hpp"
@@ -113,6 +114,65 @@ TEST(SoilStructureContact, SoilAtAConvexCornerIsNotPushedOff) {
     if (P.kind[i] == Kind::Soil) vmax = std::max(vmax, std::hypot(P.vx[i], P.vy[i]));
   EXPECT_GT(sim.steps(), 20);
   EXPECT_LT(vmax, 1e-9);  // at rest to round-off: no contact force on a layer that only touches
+}
+
+// A soil layer moved 0.3 dx into a rigid block, without gravity: the contact pushes the penetrating
+// soil out by position, beta |g| = 0.2 x 0.3 dx in the first step, and adds no momentum (a velocity
+// bias -beta g/dt gave those particles 0.2 x 0.3 dx / dt and kept it after the penetration was gone);
+// after 100 steps the penetration is gone.
+TEST(SoilStructureContact, APenetrationIsPushedOutByPositionWithoutMomentum) {
+  json j = json::parse(R"({
+    "name": "penetration", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-0.2, -0.2], "max": [0.3, 0.2]},
+    "time": {"end": 1.0},
+    "materials": {
+      "soil": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3},
+      "block": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3}
+    },
+    "bodies": [
+      {"material": "soil", "shape": "box", "min": [-0.1, -0.06], "max": [0.2, 0]},
+      {"material": "block", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "structure": true,
+       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
+    ]
+  })");
+  Simulation sim(parse_scene(j, "penetration.json"));
+  const double dx = 0.01, depth = 0.003;
+  {
+    Particles& Q = sim.particles();  // the whole layer up into the block (scenes may not overlap)
+    for (std::size_t i = 0; i < Q.size(); ++i)
+      if (Q.kind[i] == Kind::Soil) Q.y[i] += depth;
+  }
+  const auto top_row_under_block = [&](const Particles& P, std::size_t i) {
+    return P.kind[i] == Kind::Soil && P.y[i] > depth - dx && P.x[i] > 0.03 && P.x[i] < 0.07;
+  };
+  std::map<std::uint64_t, double> y0;  // by particle id (the step may reorder the particles)
+  for (std::size_t i = 0; i < sim.particles().size(); ++i)
+    if (top_row_under_block(sim.particles(), i)) y0[sim.particles().id[i]] = sim.particles().y[i];
+  ASSERT_EQ(y0.size(), 4u);
+  sim.step();
+  const Particles& P = sim.particles();
+  double py = 0, vmax = 0;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    py += P.m[i] * P.vy[i];
+    vmax = std::max(vmax, std::hypot(P.vx[i], P.vy[i]));
+    if (y0.count(P.id[i])) {
+      EXPECT_NEAR(P.y[i], y0[P.id[i]] - SoilStructureContact::kPenetrationRecovery * depth, 1e-6 * dx);  // full support along the block: the normal is vertical
+      ++k;
+    }
+  }
+  EXPECT_EQ(k, y0.size());
+  EXPECT_EQ(py, 0.0);
+  EXPECT_EQ(vmax, 0.0);  // no stress and no contact force yet: the step moved the particles, not their momentum
+  for (int s = 0; s < 100; ++s) sim.step();
+  double deepest = 0;  // the largest overlap dx - |x_soil - x_block| over soil-block pairs
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.kind[i] != Kind::Soil) continue;
+    for (std::size_t b = 0; b < P.size(); ++b)
+      if (is_structure(P.kind[b])) deepest = std::max(deepest, dx - std::hypot(P.x[i] - P.x[b], P.y[i] - P.y[b]));
+  }
+  EXPECT_LT(deepest, 0.01 * dx);
 }
 
 TEST(RigidMotion, TranslationAndRotationFollowThePrescribedPath) {
