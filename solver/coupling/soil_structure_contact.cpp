@@ -75,7 +75,8 @@ void SoilStructureContact::apply(Particles& P, const CellList& cells, double dt)
                                 std::min(0.0, std::sqrt(best_r2) - dx0));
     if (gap > 0.5 * dx0) continue;
     // a penetration is pushed out by position, a fraction of it each step, not by a velocity: the soil
-    // particle is moved along the normal (split impulse, Catto 2006; see the header)
+    // particle is moved along the normal (see the header), after the loop, since the neighbour queries
+    // of other soil particles read its position
     if (gap < 0 && !(fixed && fixed[i] > 0)) {
       const double s = -kPenetrationRecovery * gap;
       shift_[i] = {s * nrm[0], s * nrm[1], s * nrm[2]};

@@ -45,6 +45,26 @@ Scene sliding_scene(double theta_deg, double delta_deg, double t_end) {
   return parse_scene(j, "slide.json");
 }
 
+// A stiff elastic soil layer 0.3 m x 0.06 m at rest, without gravity, under a held rigid block 0.1 m
+// wide standing on it, reaching beyond both of the block's lower corners (dx = 0.01).
+Scene layer_under_block_scene(double t_end) {
+  json j = json::parse(R"({
+    "name": "layer_under_block", "dimension": 2, "dx": 0.01,
+    "domain": {"min": [-0.2, -0.2], "max": [0.3, 0.2]},
+    "materials": {
+      "soil": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3},
+      "block": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3}
+    },
+    "bodies": [
+      {"material": "soil", "shape": "box", "min": [-0.1, -0.06], "max": [0.2, 0]},
+      {"material": "block", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "structure": true,
+       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
+    ]
+  })");
+  j["time"] = {{"end", t_end}};
+  return parse_scene(j, "layer_under_block.json");
+}
+
 double mean_soil_vx(const Simulation& sim) {
   const Particles& P = sim.particles();
   double s = 0;
@@ -92,21 +112,7 @@ TEST(SoilStructureContact, SoilDoesNotPenetrateTheStructure) {
 // corner touches it without penetrating (a penetration counts at most as the centres' overlap); no
 // force may arise. Without the cap those particles were pushed off at about 0.06 dx / dt per step.
 TEST(SoilStructureContact, SoilAtAConvexCornerIsNotPushedOff) {
-  json j = json::parse(R"({
-    "name": "corner", "dimension": 2, "dx": 0.01,
-    "domain": {"min": [-0.2, -0.2], "max": [0.3, 0.2]},
-    "time": {"end": 0.01},
-    "materials": {
-      "soil": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3},
-      "block": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3}
-    },
-    "bodies": [
-      {"material": "soil", "shape": "box", "min": [-0.1, -0.06], "max": [0.2, 0]},
-      {"material": "block", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "structure": true,
-       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
-    ]
-  })");
-  Simulation sim(parse_scene(j, "corner.json"));
+  Simulation sim(layer_under_block_scene(0.01));
   sim.run();
   const Particles& P = sim.particles();
   double vmax = 0;
@@ -121,21 +127,7 @@ TEST(SoilStructureContact, SoilAtAConvexCornerIsNotPushedOff) {
 // bias -beta g/dt gave those particles 0.2 x 0.3 dx / dt and kept it after the penetration was gone);
 // after 100 steps the penetration is gone.
 TEST(SoilStructureContact, APenetrationIsPushedOutByPositionWithoutMomentum) {
-  json j = json::parse(R"({
-    "name": "penetration", "dimension": 2, "dx": 0.01,
-    "domain": {"min": [-0.2, -0.2], "max": [0.3, 0.2]},
-    "time": {"end": 1.0},
-    "materials": {
-      "soil": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3},
-      "block": {"model": "linear_elastic", "density": 2000, "young_modulus": 2e6, "poisson_ratio": 0.3}
-    },
-    "bodies": [
-      {"material": "soil", "shape": "box", "min": [-0.1, -0.06], "max": [0.2, 0]},
-      {"material": "block", "shape": "box", "min": [0, 0], "max": [0.1, 0.1], "structure": true,
-       "interface_friction_angle": 0, "motion": {"velocity": [0, 0]}}
-    ]
-  })");
-  Simulation sim(parse_scene(j, "penetration.json"));
+  Simulation sim(layer_under_block_scene(1.0));
   const double dx = 0.01, depth = 0.003;
   {
     Particles& Q = sim.particles();  // the whole layer up into the block (scenes may not overlap)
