@@ -28,6 +28,11 @@ const bool documented = register_section(
       {"kernel_gradient_correction", FieldType::Boolean, "true, false", "false", "-",
        "this material's particles use the corrected kernel gradient (Bonet & Lok 1999) in the velocity gradient "
        "and in the stress divergence, whatever numerics says (e.g. a structure a few particles thick)"},
+      choice_doc("formulation", {"updated_lagrangian", "total_lagrangian"}, "updated_lagrangian",
+                 "total_lagrangian (structures of linear_elastic only): deformation gradient and forces over the "
+                 "bonds of the reference configuration, Saint Venant-Kirchhoff stress, the corrected kernel gradient "
+                 "(Vignjevic, Reveles & Campbell 2006; Bonet & Lok 1999): no tensile instability, and a member a "
+                 "few particles thick carries its section's moment"),
       {"artificial_stress", FieldType::Object, "see materials.artificial_stress", "off", "-",
        "tensile-instability correction (Gray, Monaghan & Swift 2001)"}}});
 const bool documented_as = register_section(
@@ -84,6 +89,8 @@ SoilMaterial parse_solid_material(const JsonFields& f, const std::string& name, 
   m.artificial_viscosity_beta = f.number("artificial_viscosity_beta", Range::between(0, 2), 0.0);
   m.artificial_viscosity_balsara = f.choice("artificial_viscosity_switch", {"none", "balsara"}, "none") == "balsara";
   m.kernel_gradient_correction = f.boolean("kernel_gradient_correction", false);
+  m.total_lagrangian = f.choice("formulation", {"updated_lagrangian", "total_lagrangian"}, "updated_lagrangian") ==
+                       "total_lagrangian";
   if (auto a = f.optional_object("artificial_stress")) {
     a->section("materials.artificial_stress");
     m.artificial_stress = a->number("epsilon", Range::between(0, 1));

@@ -38,6 +38,9 @@ struct SoilMaterial {
   // kernel_gradient_correction_stress do for every solid: a structure a few particles thick transmits
   // its section's moment with it (without it its free surfaces' truncated sums make it too compliant)
   bool kernel_gradient_correction = false;
+  // formulation "total_lagrangian": a structure's linear elastic particles are summed over the bonds of
+  // their reference configuration (structure/total_lagrangian.hpp) instead of the Jaumann-rate update
+  bool total_lagrangian = false;
 
   std::string model_name() const;
   // The model's state fields in P (created, owned by the soil module, if not there yet).

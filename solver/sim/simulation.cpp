@@ -62,6 +62,10 @@ Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
     for (const auto& m : scene_.soils) bounds_.soil.rho0.push_back(m.density);
     bounds_.soil.max_speed = soil_->max_wave_speed();
   }
+  if (TotalLagrangianSolids::wanted(scene_)) {
+    total_lagrangian_ = std::make_unique<TotalLagrangianSolids>(scene_);
+    total_lagrangian_->allocate(P_);
+  }
   if (scene_.walls.type == "mirror") mirror_walls_ = std::make_unique<MirrorWalls>(scene_);
   drained_faces_ = drained_faces(scene_);
   if (P_.count(Kind::RigidStructure) > 0) {
@@ -184,6 +188,9 @@ std::vector<Stage> Simulation::stage_table() {
   add(soil_walls_ != nullptr, soil_walls(Hook::Forces));
   add(soil_ != nullptr, {"solid_momentum", Hook::Forces, {"x", "v", "rho", "m", "stress", "soil_wall_*"},
                          {"a[solid]"}, {}, [this] { soil_->momentum(P_, cells_, gravity_at(t_)); }});
+  add(total_lagrangian_ != nullptr, {"structure_total_lagrangian", Hook::Forces, {"x", "v", "m", "reference_*"},
+                                     {"a[structure]", "stress[structure]", "rho[structure]", "p[structure]"}, {},
+                                     [this] { total_lagrangian_->forces(P_, gravity_at(t_), step_, t_); }});
   add(fluid_ != nullptr, {"fluid_pressure", Hook::Forces, {"rho[fluid]", "porosity"}, {"p[fluid]"}, {},
                           [this] { fluid_->update_pressure(P_); }});
   add(dummy_walls_ != nullptr, {"fluid_walls", Hook::Forces, {"x", "v", "p[fluid]", "rho[fluid]", "porosity"},

@@ -31,6 +31,7 @@
 #include "sim/stages.hpp"
 #include "soil/soil_forces.hpp"
 #include "structure/rigid_motion.hpp"
+#include "structure/total_lagrangian.hpp"
 
 namespace geosph {
 
@@ -133,6 +134,7 @@ class Simulation {
   std::unique_ptr<SoilWalls> soil_walls_;
   std::unique_ptr<RigidMotions> rigid_;
   std::unique_ptr<SoilStructureContact> contact_;
+  std::unique_ptr<TotalLagrangianSolids> total_lagrangian_;  // materials' formulation "total_lagrangian"
   std::unique_ptr<Seepage> seepage_;
   std::vector<Stage> stages_;
   StateBounds bounds_;

@@ -51,6 +51,7 @@ SoilForces::SoilForces(const Scene& scene) : scene_(scene) {
   for (std::size_t k = 0; k < scene.soils.size(); ++k)
     if (scene.corrects_stress_divergence(k)) stress_correction_ = true;
   for (const auto& m : scene.soils) {
+    total_lagrangian_.push_back(m.total_lagrangian ? 1 : 0);
     wave_speed_.push_back(m.wave_speed());
     if (m.pressure_dependent()) has_pressure_dependent_ = true;
     else max_wave_speed_ = std::max(max_wave_speed_, m.wave_speed());
@@ -152,7 +153,7 @@ void SoilForces::update_stress_with(const K& kernel, Particles& P, const CellLis
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
-    if (!is_solid(ki)) continue;
+    if (!is_solid(ki) || total_lagrangian_[P.material[i]]) continue;  // structure/total_lagrangian.hpp
     const bool correct = scene_.corrects_velocity_gradient(P.material[i]);
     const bool correct_stress = scene_.corrects_stress_divergence(P.material[i]);
     const double vxi = vx[i], vyi = vy[i], vzi = vz[i];
@@ -378,7 +379,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
 #pragma omp for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Kind ki = kind[i];
-    if (!is_solid(ki)) continue;
+    if (!is_solid(ki) || total_lagrangian_[P.material[i]]) continue;  // structure/total_lagrangian.hpp
     const SoilMaterial& mi = scene_.soils[P.material[i]];
     const double rhoi = P.rho[i], vxi = P.vx[i], vyi = P.vy[i], vzi = P.vz[i];
     const double ci = cw ? cw[i] : wave_speed_[P.material[i]];

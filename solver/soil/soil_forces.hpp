@@ -80,6 +80,8 @@ class SoilForces {
 
   const Scene& scene_;
   std::set<std::string> state_fields_;  // the models' state fields (materials/solid_model.hpp)
+  // per material: its structure particles are stepped by structure/total_lagrangian.hpp, not here
+  std::vector<std::uint8_t> total_lagrangian_;
   std::vector<double> wave_speed_;  // per material (the constant one where the model has one)
   bool has_pressure_dependent_ = false;  // per-particle wave speeds (field SoilFields::wave_speed)
   bool has_viscosity_switch_ = false;  // a material with Balsara's switch (field SoilFields::viscosity_switch)

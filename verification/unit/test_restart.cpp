@@ -173,6 +173,15 @@ TEST(Restart, SoilWithViscositySwitchContinuesBitwise) {
 }
 TEST(Restart, TwoPhaseContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(two_phase_scene(), 100, 170); }
 TEST(Restart, StructureContinuesBitwiseAndThreadsAgree) { check_restart_and_threads(structure_scene(), 100, 170); }
+// The total Lagrangian block's reference positions travel in the checkpoint; its bonds are rebuilt from them.
+TEST(Restart, TotalLagrangianStructureContinuesBitwiseAndThreadsAgree) {
+  json j = structure_scene();
+  j["name"] = "restart_structure_tl";
+  j["materials"]["tl_block"] = j["materials"]["block"];
+  j["materials"]["tl_block"]["formulation"] = "total_lagrangian";
+  j["bodies"][1]["material"] = "tl_block";
+  check_restart_and_threads(j, 100, 170);
+}
 
 // SIGTERM mid-run: exit code 4, a checkpoint, an index naming only complete snapshots; the restart
 // finishes the run with the uninterrupted run's last snapshot.
