@@ -4,6 +4,9 @@
 // is the static deflection, compared with Timoshenko beam theory (bending + shear):
 //   delta = q L^4 / (8 E' I) + q L^2 / (2 kappa G A),  q = rho g H,  I = H^3/12,  A = H,  kappa = 5/6,
 //   E' = E / (1 - nu^2) (plane strain).
+// The bending moment at mid-span read from the stress (I times the slope of a least-squares line of
+// sigma_xx against y over the particle column) is compared with statics, q (L - x)^2 / 2, at every
+// spacing: the readout cantilever_sheet_pile makes of its pile.
 // It checks the structure solid alone (no soil). As for oscillating_plate, the single-resolution
 // error is first order in dx, so the scored metric is the Richardson-extrapolated deflection, with the
 // order observed from three spacings (H/dx = 5, 10, 20 at the quick level).
@@ -60,6 +63,19 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   }
   const std::int64_t tip_id = P0.id[tip];
   const double y0 = P0.y[tip];
+  // the particle column nearest mid-span: its bending moment read from the stress, against statics
+  // M = q (L - x)^2 / 2 at the column's x (equilibrium of the span beyond it; no beam theory)
+  double x_mid = 0;
+  {
+    double best_mid = 1e300;
+    for (std::size_t i = 0; i < P0.size(); ++i)
+      if (P0.kind[i] == Kind::Structure && std::abs(P0.x[i] - 0.5 * b.L) < best_mid) { best_mid = std::abs(P0.x[i] - 0.5 * b.L); x_mid = P0.x[i]; }
+  }
+  std::vector<std::int64_t> column;
+  for (std::size_t i = 0; i < P0.size(); ++i)
+    if (P0.kind[i] == Kind::Structure && std::abs(P0.x[i] - x_mid) < 0.25 * scene.dx) column.push_back(P0.id[i]);
+  std::sort(column.begin(), column.end());
+  double msum = 0;
   Record rec = start_record(cfg, ctx);
   Series defl{"SPH tip", "simulation", "tip", "t / T", "tip deflection / theory", {}, {}};
   double sum = 0, weight = 0, t_prev = 0;
@@ -68,7 +84,25 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
     if (P.id[tip] != tip_id) tip = static_cast<std::size_t>(std::find(P.id.begin(), P.id.end(), tip_id) - P.id.begin());
     const double w = -(P.y[tip] - y0);
     if (defl.x.empty() || s.time() / T > defl.x.back() + 0.01) { defl.x.push_back(s.time() / T); defl.y.push_back(w / b.delta); }
-    if (s.time() > t_avg) { sum += w * (s.time() - std::max(t_prev, t_avg)); weight += s.time() - std::max(t_prev, t_avg); }
+    if (s.time() > t_avg) {
+      const double dt_w = s.time() - std::max(t_prev, t_avg);
+      sum += w * dt_w;
+      weight += dt_w;
+      // M = I * slope of the column's sigma_xx against y (least squares; the clockwise moment that holds
+      // the span beyond, positive for a beam hanging under its weight)
+      const auto& sxx = P.field(SoilFields::xx);
+      double ybar = 0, sbar = 0, n = 0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        if (std::binary_search(column.begin(), column.end(), P.id[i])) { ybar += P.y[i]; sbar += sxx[i]; n += 1; }
+      ybar /= n; sbar /= n;
+      double sy = 0, yy = 0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        if (std::binary_search(column.begin(), column.end(), P.id[i])) {
+          sy += (sxx[i] - sbar) * (P.y[i] - ybar);
+          yy += (P.y[i] - ybar) * (P.y[i] - ybar);
+        }
+      msum += b.H * b.H * b.H / 12.0 * sy / yy * dt_w;
+    }
     t_prev = s.time();
   }, ctx.progress);
   const double delta_sph = weight > 0 ? sum / weight : NAN;
@@ -79,6 +113,11 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   rec.extra["deflection_theory_m"] = b.delta;
   rec.extra["shear_part_of_theory"] = (b.q * b.L * b.L / (2.0 * 5.0 / 6.0 * b.G * b.H)) / b.delta;
   rec.extra["H_over_dx"] = b.H / scene.dx;
+  const double m_statics = b.q * (b.L - x_mid) * (b.L - x_mid) / 2.0;
+  rec.extra["midspan_x_m"] = x_mid;
+  rec.extra["midspan_moment_statics_N"] = m_statics;
+  rec.extra["midspan_moment_from_stress_N"] = weight > 0 ? msum / weight : NAN;
+  rec.extra["midspan_moment_ratio"] = weight > 0 ? msum / weight / m_statics : NAN;
   add_case_metric(rec, cfg, "deflection_rel_error", std::abs(delta_sph - b.delta) / b.delta, ok);
   rec.snapshot = field_snapshot(sim, SoilFields::xx, "Pa");
   return rec;
@@ -92,8 +131,11 @@ std::vector<Record> run_cantilever_beam(const CaseContext& ctx, const std::strin
   const CaseConfig cfg = load_case(ctx, case_name);
   std::vector<Record> out;
   std::vector<double> spacings, deflections;
+  double moment_error = 0;  // the largest over the spacings
   for (double dx : cfg.level_numbers("dx")) {
     out.push_back(run_at(cfg, ctx, dx));
+    const double e = std::abs(out.back().extra["midspan_moment_ratio"].get<double>() - 1.0);
+    moment_error = std::isfinite(e) ? std::max(moment_error, e) : INFINITY;
     spacings.push_back(dx);
     deflections.push_back(out.back().extra["deflection_sph_m"].get<double>());
   }
@@ -109,6 +151,7 @@ std::vector<Record> run_cantilever_beam(const CaseContext& ctx, const std::strin
   const bool all_stable = std::all_of(out.begin(), out.end(), [](const Record& r) { return r.stable; });
   fine.metrics.clear();
   add_case_metric(fine, cfg, "extrapolated_deflection_rel_error", std::abs(ex.value - theory) / theory, all_stable);
+  add_case_metric(fine, cfg, "midspan_moment_rel_error", moment_error, all_stable);
   return out;
 }
 
