@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +44,8 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
         rec.options["dilatancy_angle_deg"] = model.dilatancy_angle;
       }
     }, m.model);
+    if (std::any_of(s.soils.begin(), s.soils.end(), [](const SoilMaterial& k) { return k.total_lagrangian; }))
+      rec.options["structure_formulation"] = "total_lagrangian";  // structure/total_lagrangian.hpp
   }
   const long steps0 = sim.steps();
   Progress bar(s.t_end, progress);
