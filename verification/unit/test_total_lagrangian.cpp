@@ -90,6 +90,39 @@ TEST(TotalLagrangian, AnAffineMotionGivesSaintVenantKirchhoffStressAtEveryPartic
   EXPECT_LT(worst, 1e-9 * scale) << "largest stress error " << worst << " Pa of " << scale;
 }
 
+TEST(TotalLagrangian, InThreeDimensionsAnAffineMotionGivesTheStressAtEveryParticle) {
+  json j = plate_json();
+  j["dimension"] = 3;
+  j["domain"] = {{"min", {-0.5, -0.5, -0.5}}, {"max", {0.7, 0.6, 0.6}}};
+  j["gravity"] = {0, 0, 0};
+  j["bodies"][0]["min"] = {0, 0, 0};
+  j["bodies"][0]["max"] = {0.08, 0.05, 0.04};
+  Simulation sim(parse_scene(j, "block.json"));
+  Particles& P = sim.particles();
+  TotalLagrangianSolids tl(sim.scene());
+  Eigen::Matrix3d F;
+  F << 1.02, 0.01, -0.02, 0.015, 0.98, 0.01, 0.0, -0.01, 1.01;
+  F = rotation(20) * F;
+  const double* X[3];
+  for (int a = 0; a < 3; ++a) X[a] = P.field(TotalLagrangianFields::reference[a]).data();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const Eigen::Vector3d x = F * Eigen::Vector3d(X[0][i], X[1][i], X[2][i]);
+    P.x[i] = x(0); P.y[i] = x(1); P.z[i] = x(2);
+  }
+  tl.forces(P, {0, 0, 0}, 0, 0);
+  const double mu = kE / (2 * (1 + kNu)), lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  const Eigen::Matrix3d s = F * (lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E) * F.transpose() / F.determinant();
+  const char* names[6] = {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::xz, SoilFields::yz};
+  const int rows[6] = {0, 1, 2, 0, 0, 1}, cols[6] = {0, 1, 2, 1, 2, 2};
+  double worst = 0;
+  for (int c = 0; c < 6; ++c) {
+    const auto& f = P.field(names[c]);
+    for (std::size_t i = 0; i < P.size(); ++i) worst = std::max(worst, std::abs(f[i] - s(rows[c], cols[c])));
+  }
+  EXPECT_LT(worst, 1e-9 * s.norm()) << "largest stress error " << worst << " Pa of " << s.norm();
+}
+
 TEST(TotalLagrangian, ARigidRotationCarriesNoStress) {
   Simulation sim(parse_scene(plate_json(), "plate.json"));
   Particles& P = sim.particles();
