@@ -86,14 +86,12 @@ void TotalLagrangianSolids::build_bonds(Particles& P) const {
   for (int a = 0; a < 3; ++a) X[a] = P.field(TotalLagrangianFields::reference[a]).data();
   std::int32_t* has = P.int_field(TotalLagrangianFields::has_reference).data();
   list_.clear();
-  local_.assign(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
     if (P.kind[i] != Kind::Structure || !tl_[P.material[i]]) continue;
     if (!has[i]) {  // the start, or a body placed since: its reference configuration is where it is now
       X[0][i] = P.x[i]; X[1][i] = P.y[i]; X[2][i] = P.z[i];
       has[i] = 1;
     }
-    local_[i] = static_cast<std::int32_t>(list_.size());
     list_.push_back(static_cast<std::uint32_t>(i));
   }
   ids_.assign(P.id.begin(), P.id.end());

@@ -5,9 +5,9 @@
 //   with a quadratic basis p = (X_ij, X_ij X_ij), weights V0_j W_ij: c_ij = V0_j W_ij [M_i^-1 p(X_ij)]_grad,
 //   M_i = sum_j V0_j W_ij p p^T. F is exact for motions quadratic in X, also at free surfaces (the MSPH
 //   idea, Zhang & Batra 2004, Comput. Mech. 34, 137-146), so the outer rows of a member read the bending
-//   strain at their own position. (The first-order correction of Bonet & Lok 1999, CMAME 180, eq. 22,
-//   exact for affine motion only, reads it one bond inward at a free surface: a beam five particles thick
-//   came out 1.6 times too compliant.) Where the bonds cannot fix a quadratic, c_ij = V0_j A_i^-T grad0 W_ij.
+//   strain at their own position, where a first-order gradient, all of whose bonds lie inward, reads it
+//   inside the section. Where the bonds cannot fix a quadratic: Bonet & Lok's first-order correction
+//   (1999, CMAME 180, eq. 22), c_ij = V0_j A_i^-T grad0 W_ij, A_i = sum_j V0_j (X_j - X_i) (x) grad0 W_ij.
 //   E = (F^T F - I)/2, S = lambda tr(E) I + 2 mu E      (Saint Venant-Kirchhoff; plane strain in 2D)
 //   f_i = -dU/dx_i = sum_j (V0_i P_i c_ij - V0_j P_j c_ji),  P = F S,  U = sum_i V0_i psi(F_i)
 //                                                         (Vignjevic, Reveles & Campbell 2006, CMES 14:
@@ -56,7 +56,6 @@ class TotalLagrangianSolids {
   std::vector<double> lambda_, mu_, c_;    // per solid material: Lame constants, P-wave speed
   mutable std::vector<std::int64_t> ids_;  // P.id at the last build
   mutable std::vector<std::uint32_t> list_;  // the structure's particles (indices into P)
-  mutable std::vector<std::int32_t> local_;  // P index -> position in list_ (-1: not total Lagrangian)
   mutable std::vector<std::uint32_t> start_;  // bonds of list_[k]: start_[k] .. start_[k+1]
   mutable std::vector<std::uint32_t> bond_j_;  // the partner's position in list_
   mutable std::vector<std::array<double, 3>> bond_c_;  // c_ij: F_i = sum_j (x_j - x_i) (x) c_ij
