@@ -1,4 +1,5 @@
 #include "soil/soil_forces.hpp"
+#include "core/artificial_viscosity.hpp"
 #include "core/kernel_columns.hpp"
 #include "core/pair_columns.hpp"
 #include "soil/soil_mirror_images.hpp"
@@ -489,13 +490,12 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
           Txx += f * rsum[0][k]; Tyy += f * rsum[1][k]; Txy += f * rsum[3][k];
           if constexpr (Dim == 3) { Tzz += f * rsum[2][k]; Txz += f * rsum[4][k]; Tyz += f * rsum[5][k]; }
         }
-        // Monaghan's artificial viscosity for approaching pairs: Pi = (-alpha c mu + beta mu^2) / rho_ij,
-        // mu = h v.r / d, d = r^2 + eta^2, as one division
+        // Monaghan's artificial viscosity for approaching pairs (core/artificial_viscosity.hpp)
         const double ux = u[0][k], uy = u[1][k], uz = Dim == 3 ? u[2][k] : 0.0;
         const double vr = std::min(Dim == 3 ? ux * dx + uy * dy + uz * dz : ux * dx + uy * dy, 0.0);
         const double d = r2 + eta2, hvr = h * vr;
         const double c = cs * cc[k];
-        double Pi = hvr * (beta * hvr - alpha * c * d) / (0.5 * d * d * (rhoi + rho[k]));
+        double Pi = monaghan_viscosity(hvr, d, c, alpha, beta, rhoi, rho[k]);
         Pi *= swp[k];
         Txx -= Pi; Tyy -= Pi;
         if constexpr (Dim == 3) Tzz -= Pi;
@@ -569,7 +569,7 @@ void SoilForces::momentum_with(const K& kernel, Particles& P, const CellList& ce
         const double vr = std::min(u[0] * r[0] + u[1] * r[1] + u[2] * r[2], 0.0);
         const double d = rr * rr + eta2, hvr = h * vr;
         const double cij = cw ? 0.5 * (ci + cw[j]) : ci;
-        double Pi = hvr * (beta * hvr - alpha * cij * d) / (0.5 * d * d * (rhoi + rhoj));
+        double Pi = monaghan_viscosity(hvr, d, cij, alpha, beta, rhoi, rhoj);
         if (sw) Pi *= 0.5 * (sw[i] + sw[j]);
         Tm[0] -= Pi; Tm[1] -= Pi; Tm[2] -= Pi;
         ax += mj * (Tm[0] * grad[0] + Tm[3] * grad[1] + Tm[4] * grad[2]);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "boundary/body_fields.hpp"
+#include "core/artificial_viscosity.hpp"
 #include "core/kernels.hpp"
 #include "io/json_fields.hpp"
 #include "materials/linear_elastic.hpp"
@@ -290,11 +291,9 @@ void TotalLagrangianSolids::forces_with(Particles& P, const std::array<double, 3
         vr += u[a] * r[a];
         r2 += r[a] * r[a];
       }
-      if (vr < 0) {
-        const double mu = h * vr / (r2 + eta2);
-        const double rho_ij = 0.5 * (P.rho[i] + P.rho[j]);
+      if (vr < 0) {  // Monaghan's, core/artificial_viscosity.hpp
         const double cij = 0.5 * (c_[mat] + c_[P.material[j]]);
-        const double Pi = (-alpha * cij * mu + beta * mu * mu) / rho_ij;
+        const double Pi = monaghan_viscosity(h * vr, r2 + eta2, cij, alpha, beta, P.rho[i], P.rho[j]);
         for (int a = 0; a < Dim; ++a) visc[a] -= P.m[j] * Pi * bond_fw_[b] * r[a];
       }
     }
