@@ -75,6 +75,19 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
   for (std::size_t i = 0; i < P0.size(); ++i)
     if (P0.kind[i] == Kind::Structure && std::abs(P0.x[i] - x_mid) < 0.25 * scene.dx) column.push_back(P0.id[i]);
   std::sort(column.begin(), column.end());
+  // the column's particle indices in index order (the sums' order) and their ids, found again only when
+  // the particles were reordered
+  std::vector<std::size_t> col_index;
+  std::vector<std::int64_t> col_id;
+  const auto locate_column = [&](const Particles& P) {
+    bool current = col_index.size() == column.size();
+    for (std::size_t k = 0; current && k < col_index.size(); ++k) current = P.id[col_index[k]] == col_id[k];
+    if (current) return;
+    col_index.clear();
+    col_id.clear();
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (std::binary_search(column.begin(), column.end(), P.id[i])) { col_index.push_back(i); col_id.push_back(P.id[i]); }
+  };
   double msum = 0;
   Record rec = start_record(cfg, ctx);
   Series defl{"SPH tip", "simulation", "tip", "t / T", "tip deflection / theory", {}, {}};
@@ -91,16 +104,15 @@ Record run_at(const CaseConfig& cfg, const CaseContext& ctx, double spacing) {
       // M = I * slope of the column's sigma_xx against y (least squares; the clockwise moment that holds
       // the span beyond, positive for a beam hanging under its weight)
       const auto& sxx = P.field(SoilFields::xx);
+      locate_column(P);
       double ybar = 0, sbar = 0, n = 0;
-      for (std::size_t i = 0; i < P.size(); ++i)
-        if (std::binary_search(column.begin(), column.end(), P.id[i])) { ybar += P.y[i]; sbar += sxx[i]; n += 1; }
+      for (const std::size_t i : col_index) { ybar += P.y[i]; sbar += sxx[i]; n += 1; }
       ybar /= n; sbar /= n;
       double sy = 0, yy = 0;
-      for (std::size_t i = 0; i < P.size(); ++i)
-        if (std::binary_search(column.begin(), column.end(), P.id[i])) {
-          sy += (sxx[i] - sbar) * (P.y[i] - ybar);
-          yy += (P.y[i] - ybar) * (P.y[i] - ybar);
-        }
+      for (const std::size_t i : col_index) {
+        sy += (sxx[i] - sbar) * (P.y[i] - ybar);
+        yy += (P.y[i] - ybar) * (P.y[i] - ybar);
+      }
       msum += b.H * b.H * b.H / 12.0 * sy / yy * dt_w;
     }
     t_prev = s.time();
