@@ -2,13 +2,13 @@
 
 #include <omp.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "harness/metrics.hpp"
 #include "sim/progress.hpp"
+#include "structure/total_lagrangian.hpp"
 
 namespace geosph::verify {
 
@@ -44,7 +44,7 @@ bool run_timed(Simulation& sim, Record& rec, const std::function<void(const Simu
         rec.options["dilatancy_angle_deg"] = model.dilatancy_angle;
       }
     }, m.model);
-    if (std::any_of(s.soils.begin(), s.soils.end(), [](const SoilMaterial& k) { return k.total_lagrangian; }))
+    if (TotalLagrangianSolids::wanted(s))
       rec.options["structure_formulation"] = "total_lagrangian";  // structure/total_lagrangian.hpp
   }
   const long steps0 = sim.steps();

@@ -110,9 +110,7 @@ TEST(TotalLagrangian, InThreeDimensionsAnAffineMotionGivesTheStressAtEveryPartic
     P.x[i] = x(0); P.y[i] = x(1); P.z[i] = x(2);
   }
   tl.forces(P, {0, 0, 0}, 0, 0);
-  const double mu = kE / (2 * (1 + kNu)), lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
-  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-  const Eigen::Matrix3d s = F * (lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E) * F.transpose() / F.determinant();
+  const Eigen::Matrix3d s = svk_cauchy(F);
   const char* names[6] = {SoilFields::xx, SoilFields::yy, SoilFields::zz, SoilFields::xy, SoilFields::xz, SoilFields::yz};
   const int rows[6] = {0, 1, 2, 0, 0, 1}, cols[6] = {0, 1, 2, 1, 2, 2};
   double worst = 0;
